@@ -1,0 +1,64 @@
+#pragma once
+/// A scene kind (`point`, `triaxial`, `calibration`, `ffp`, `cpt`) is a factory
+/// that reads and validates its keys into a Job; the program runs the Job into
+/// a temporary output directory and writes summary.json around it.
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/scene/scene_reader.hpp"
+
+namespace ffp {
+
+struct RunContext {
+  std::filesystem::path out_dir;     ///< temporary directory to write into
+  std::filesystem::path scene_dir;   ///< folder of the scene file (relative paths in scenes start here)
+  bool show_progress = true;
+  json summary = json::object();     ///< the figures the job reports
+  long steps = 0;                    ///< increments or time steps taken
+};
+
+/// A run that failed numerically (not bad input): exit code 1. When
+/// `reproducer` is an object, the program saves it as a scene that repeats the
+/// failing step.
+class RunFailure : public std::runtime_error {
+ public:
+  explicit RunFailure(const std::string& message, json reproducer = nullptr)
+      : std::runtime_error(message), reproducer_(std::move(reproducer)) {}
+  const json& reproducer() const { return reproducer_; }
+
+ private:
+  json reproducer_;
+};
+
+class Job {
+ public:
+  virtual ~Job() = default;
+  virtual void run(RunContext& context) = 0;
+  /// What `ffp check` prints beyond "valid" (e.g. the time step and its limit).
+  virtual void describe(std::ostream&) const {}
+};
+
+/// Reads the kind's keys from the top-level scene reader (kind and name are
+/// already read) and finish()es it. Throws SceneError on bad input.
+using JobFactory = std::unique_ptr<Job> (*)(SceneReader& scene, const std::filesystem::path& scene_dir);
+
+struct KindEntry {
+  std::string_view kind;
+  std::string_view description;
+  JobFactory make;
+};
+
+/// Every kind this build can run.
+const std::vector<KindEntry>& registered_kinds();
+
+/// Validate a scene (overrides already applied): returns the job and fills `echo`.
+std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo);
+
+}  // namespace ffp

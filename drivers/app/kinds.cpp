@@ -1,0 +1,45 @@
+#include <algorithm>
+
+#include "drivers/app/job.hpp"
+#include "drivers/app/kinds.hpp"
+
+namespace ffp {
+
+const std::vector<KindEntry>& registered_kinds() {
+  static const std::vector<KindEntry> kinds = {
+
+  };
+  return kinds;
+}
+
+std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo) {
+  echo = json::object();
+  SceneReader top(scene, "", echo);
+  std::vector<std::string> names;
+  for (const auto& k : registered_kinds()) names.emplace_back(k.kind);
+  const json* kind_value = scene.contains("kind") ? &scene.at("kind") : nullptr;
+  if (kind_value == nullptr) {
+    std::string allowed;
+    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    top.fail("kind", "is required (one of: " + allowed + ")");
+  }
+  const std::string kind = kind_value->is_string() ? kind_value->get<std::string>() : "";
+  const auto entry = std::find_if(registered_kinds().begin(), registered_kinds().end(),
+                                  [&](const KindEntry& k) { return k.kind == kind; });
+  if (entry == registered_kinds().end()) {
+    std::string allowed;
+    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    const std::string guess = kind.empty() ? "" : nearest(kind, names);
+    top.fail("kind", (kind_value->is_string() ? "'" + kind + "' is not a kind this build runs"
+                                              : std::string("must be a string")) +
+                         ": must be one of: " + allowed + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+  }
+  top.allow("kind");
+  echo["kind"] = kind;
+  top.text("name", kind);
+  top.allow("description");
+  if (scene.contains("description")) echo["description"] = scene.at("description");
+  return entry->make(top, scene_dir);
+}
+
+}  // namespace ffp

@@ -1,0 +1,9 @@
+#pragma once
+/// Factories of the scene kinds, one file each.
+#include "drivers/app/job.hpp"
+
+namespace ffp {
+
+std::unique_ptr<Job> make_point_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+
+}  // namespace ffp

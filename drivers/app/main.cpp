@@ -1,0 +1,60 @@
+/// ffp: sand constitutive-model testbed and axisymmetric MPM solver for
+/// free-fall penetrometer impacts.
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "drivers/app/commands.hpp"
+#include "drivers/app/job.hpp"
+#include "drivers/output/interrupt.hpp"
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: ffp <command> [options]
+
+Commands:
+  run SCENE.json [--out DIR] [--set key=value ...] [--quiet]
+        Run a scene; write DIR/summary.json, DIR/history.csv, DIR/plots/
+        (default DIR: results/<scene name>). --set overrides any scene key,
+        e.g. --set material.E_kPa=5000.
+  check SCENE.json [--set key=value ...]
+        Validate a scene and print it with defaults filled in.
+  sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR]
+        Run every combination as an independent process; DIR/sweep.csv.
+  report [--out DIR] [--jobs N]
+        Run the validation study (cached) and write DIR/report.md with figures.
+  bench
+        Measure the speed of the constitutive updates and the MPM step.
+  --help, --version
+
+Scene kinds: point, triaxial, calibration, ffp, cpt (see README.md).
+Exit codes: 0 done, 1 run failed, 2 bad input, 130 interrupted.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ffp::install_interrupt_handlers();
+  ffp::Arguments args(argv + 1, argv + argc);
+  if (args.empty()) {
+    std::fputs(kUsage, stderr);
+    return 2;
+  }
+  const std::string command = args.front();
+  args.erase(args.begin());
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (command == "--version") {
+    std::puts(ffp::version_string().c_str());
+    return 0;
+  }
+  if (command == "run") return ffp::command_run(args);
+  if (command == "check") return ffp::command_check(args);
+  if (command == "sweep") return ffp::command_sweep(args);
+  if (command == "report") return ffp::command_report(args);
+  if (command == "bench") return ffp::command_bench(args);
+  std::fprintf(stderr, "ffp: unknown command '%s' (try ffp --help)\n", command.c_str());
+  return 2;
+}

@@ -1,0 +1,161 @@
+/// `ffp run` and `ffp check`.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <regex>
+#include <thread>
+
+#include "drivers/app/commands.hpp"
+#include "drivers/app/job.hpp"
+#include "drivers/app/version.hpp"
+#include "drivers/output/interrupt.hpp"
+#include "drivers/output/run_directory.hpp"
+
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+std::string version_string() { return std::string("ffp ") + FFP_VERSION; }
+
+namespace {
+
+struct SceneArguments {
+  std::string scene_file;
+  std::vector<std::string> overrides;
+  std::optional<fs::path> out;
+  bool quiet = false;
+};
+
+SceneArguments parse_scene_arguments(const Arguments& args, const char* command, bool allow_out) {
+  SceneArguments parsed;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const char* option) -> std::string {
+      if (i + 1 >= args.size()) throw SceneError(std::string(option) + ": needs a value");
+      return args[++i];
+    };
+    if (a == "--set") {
+      parsed.overrides.push_back(value("--set"));
+    } else if (a.rfind("--set=", 0) == 0) {
+      parsed.overrides.push_back(a.substr(6));
+    } else if (allow_out && a == "--out") {
+      parsed.out = value("--out");
+    } else if (a == "--quiet" || a == "-q") {
+      parsed.quiet = true;
+    } else if (!a.empty() && a[0] == '-') {
+      throw SceneError(std::string("ffp ") + command + ": unknown option '" + a + "' (try ffp --help)");
+    } else if (parsed.scene_file.empty()) {
+      parsed.scene_file = a;
+    } else {
+      throw SceneError(std::string("ffp ") + command + ": one scene file at a time (got '" + parsed.scene_file +
+                       "' and '" + a + "')");
+    }
+  }
+  if (parsed.scene_file.empty()) throw SceneError(std::string("ffp ") + command + ": missing SCENE.json");
+  return parsed;
+}
+
+struct LoadedScene {
+  std::unique_ptr<Job> job;
+  json echo;
+  fs::path scene_dir;
+};
+
+LoadedScene load(const SceneArguments& a) {
+  json scene = load_scene_file(a.scene_file);
+  for (const auto& assignment : a.overrides) apply_override(scene, assignment);
+  LoadedScene loaded;
+  loaded.scene_dir = fs::path(a.scene_file).parent_path();
+  loaded.job = make_job(scene, loaded.scene_dir, loaded.echo);
+  const std::string name = loaded.echo.value("name", "");
+  static const std::regex safe("[A-Za-z0-9][A-Za-z0-9_.-]{0,99}");
+  if (!std::regex_match(name, safe))
+    throw SceneError("name: '" + name + "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
+  return loaded;
+}
+
+int report_error(const std::exception& e, int code) {
+  std::fprintf(stderr, "error: %s\n", e.what());
+  return code;
+}
+
+}  // namespace
+
+int command_run(const Arguments& args) {
+  try {
+    const SceneArguments a = parse_scene_arguments(args, "run", true);
+    LoadedScene loaded = load(a);
+    const fs::path out = a.out.value_or(fs::path("results") / loaded.echo["name"].get<std::string>());
+    RunDirectory directory(out);
+    RunContext context;
+    context.out_dir = directory.path();
+    context.scene_dir = loaded.scene_dir;
+    context.show_progress = !a.quiet;
+    const auto start = std::chrono::steady_clock::now();
+    loaded.job->run(context);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    json summary = context.summary;
+    summary["wall_time_s"] = wall;
+    summary["steps"] = context.steps;
+    summary["ffp_version"] = FFP_VERSION;
+    summary["threads"] = std::max(1u, std::thread::hardware_concurrency());
+    summary["scene"] = loaded.echo;
+    write_file_atomically(directory.path() / "summary.json", summary.dump(2) + "\n");
+    throw_if_interrupted();
+    directory.commit();
+    if (!a.quiet) std::fprintf(stderr, "wrote %s (%.2f s)\n", out.string().c_str(), wall);
+    return 0;
+  } catch (const SceneError& e) {
+    return report_error(e, 2);
+  } catch (const Interrupted& e) {
+    std::fputs("interrupted: no result written\n", stderr);
+    return 130;
+  } catch (const RunFailure& e) {
+    if (e.reproducer().is_object()) {
+      const fs::path file = fs::path("failed-step.json");
+      write_file_atomically(file, e.reproducer().dump(2) + "\n");
+      std::fprintf(stderr, "error: %s\n  a scene that repeats the failing step: %s\n", e.what(), file.string().c_str());
+      return 1;
+    }
+    return report_error(e, 1);
+  } catch (const std::exception& e) {
+    return report_error(e, 1);
+  }
+}
+
+int command_check(const Arguments& args) {
+  try {
+    const SceneArguments a = parse_scene_arguments(args, "check", false);
+    LoadedScene loaded = load(a);
+    std::printf("%s: valid %s scene '%s'\n", a.scene_file.c_str(), loaded.echo["kind"].get<std::string>().c_str(),
+                loaded.echo["name"].get<std::string>().c_str());
+    loaded.job->describe(std::cout);
+    std::cout << "resolved scene (defaults filled in):\n" << loaded.echo.dump(2) << "\n";
+    return 0;
+  } catch (const SceneError& e) {
+    return report_error(e, 2);
+  } catch (const std::exception& e) {
+    return report_error(e, 1);
+  }
+}
+
+int command_bench(const Arguments&) {
+  std::fputs("ffp bench: not available yet in this version (the speed benchmarks are the ffp_bench_* programs)\n",
+             stderr);
+  return 1;
+}
+
+int command_report(const Arguments&) {
+  std::fputs("ffp report: not available yet in this version\n", stderr);
+  return 1;
+}
+
+int command_sweep(const Arguments&) {
+  std::fputs("ffp sweep: not available yet in this version\n", stderr);
+  return 1;
+}
+
+}  // namespace ffp

@@ -1,0 +1,99 @@
+#include "drivers/scene/material_scene.hpp"
+
+namespace ffp {
+
+const ElasticConstants& MaterialSpec::elastic() const {
+  return std::visit(
+      [](const auto& p) -> const ElasticConstants& {
+        if constexpr (std::is_same_v<std::decay_t<decltype(p)>, ElasticConstants>) {
+          return p;
+        } else {
+          return p.elastic;
+        }
+      },
+      parameters);
+}
+
+namespace {
+
+// Bounds wide enough for any soil or structural material, tight enough to
+// catch unit mistakes and absurd inputs (E in Pa typed as kPa, ...).
+constexpr double kMaxModulus_kPa = 1e9;  // 1 TPa, above diamond
+constexpr double kMaxDensity = 30000.0;
+constexpr double kMaxCohesion_kPa = 1e6;
+
+ElasticConstants read_elastic(SceneReader& m) {
+  ElasticConstants e;
+  e.youngs_modulus_Pa = 1e3 * m.number("E_kPa", Range::positive(kMaxModulus_kPa, "kPa"));
+  e.poisson_ratio = m.number("nu", Range::half_open(0.0, 0.5));
+  return e;
+}
+
+}  // namespace
+
+MaterialSpec read_material(SceneReader& m, DensityRule density) {
+  MaterialSpec spec;
+  spec.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "ssmc"});
+  const ElasticConstants elastic = read_elastic(m);
+  if (density == DensityRule::required)
+    spec.density_kg_m3 = m.number("density_kg_m3", Range::positive(kMaxDensity, "kg/m³"));
+
+  if (spec.model == "linear_elastic") {
+    spec.parameters = elastic;
+    m.finish("a linear_elastic material");
+    return spec;
+  }
+
+  const double phi_deg = m.number("phi_peak_deg", Range::open(0.0, 90.0, "degrees"));
+  const double cohesion_kPa = m.number("c_peak_kPa", Range::non_negative(kMaxCohesion_kPa, "kPa"), 0.0);
+
+  if (spec.model == "mohr_coulomb") {
+    MohrCoulombParameters p;
+    p.elastic = elastic;
+    p.friction_angle_rad = phi_deg * kDegree;
+    p.dilatancy_angle_rad = m.number("psi_peak_deg", Range::closed(0.0, phi_deg, "degrees (0 ≤ ψ ≤ φ)"), 0.0) * kDegree;
+    p.cohesion_Pa = 1e3 * cohesion_kPa;
+    spec.parameters = p;
+    m.finish("a mohr_coulomb material");
+    return spec;
+  }
+
+  StrainSofteningParameters p;
+  p.elastic = elastic;
+  p.friction_peak_rad = phi_deg * kDegree;
+  p.friction_residual_rad =
+      m.number("phi_residual_deg", Range::closed(0.0, phi_deg, "degrees (0 < φ_r ≤ φ_p)")) * kDegree;
+  if (p.friction_residual_rad <= 0.0) m.fail("phi_residual_deg", "must be > 0 degrees");
+  p.cohesion_peak_Pa = 1e3 * cohesion_kPa;
+  p.cohesion_residual_Pa =
+      1e3 * m.number("c_residual_kPa", Range::closed(0.0, cohesion_kPa, "kPa (0 ≤ c_r ≤ c_p)"), 0.0);
+  p.softening_factor = m.number("eta", Range::positive(1e4));
+  if (m.has("relative_density")) {
+    if (m.has("psi_peak_deg"))
+      m.fail("psi_peak_deg", "give either psi_peak_deg or relative_density (Bolton dilatancy), not both");
+    p.relative_density = m.number("relative_density", Range::closed(0.0, 1.0));
+  } else {
+    p.dilatancy_peak_rad = m.number("psi_peak_deg", Range::closed(0.0, phi_deg, "degrees (0 ≤ ψ ≤ φ)"), 0.0) * kDegree;
+  }
+  const double psi_peak_deg = p.dilatancy_peak_rad / kDegree;
+  p.dilatancy_residual_rad =
+      m.number("psi_residual_deg", Range::closed(0.0, p.relative_density ? phi_deg : psi_peak_deg, "degrees"), 0.0) *
+      kDegree;
+  if (m.has("rate_dependence")) {
+    SceneReader r = m.object("rate_dependence");
+    p.rate.alpha_phi = r.number("alpha_phi", Range::closed(0.0, 10.0));
+    p.rate.reference_strain_rate_per_s = r.number("reference_strain_rate_per_s", Range::positive(1e6, "1/s"));
+    p.rate.smoothing_increments = r.integer("smoothing_increments", 1, 10000, 1);
+    p.rate.max_friction_angle_rad =
+        r.number("max_phi_deg", Range::closed(phi_deg, 89.0, "degrees (≥ phi_peak_deg)"), std::max(70.0, phi_deg)) *
+        kDegree;
+    r.finish("rate_dependence");
+  } else {
+    m.allow("rate_dependence");
+  }
+  spec.parameters = p;
+  m.finish("an ssmc material");
+  return spec;
+}
+
+}  // namespace ffp

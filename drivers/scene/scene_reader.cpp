@@ -1,0 +1,386 @@
+#include "drivers/scene/scene_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace ffp {
+
+namespace {
+
+std::string format_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+std::string type_name(const json& v) {
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_array()) return "an array";
+  if (v.is_object()) return "an object";
+  if (v.is_null()) return "null";
+  return "an unknown type";
+}
+
+std::string join_quoted(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) {
+    if (!out.empty()) out += ", ";
+    out += w;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool Range::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  if (min_open ? !(v > min) : !(v >= min)) return false;
+  if (max_open ? !(v < max) : !(v <= max)) return false;
+  return true;
+}
+
+std::string Range::describe() const {
+  const double lowest = -std::numeric_limits<double>::max();
+  const double highest = std::numeric_limits<double>::max();
+  std::string out;
+  if (min > lowest) out += (min_open ? "> " : "≥ ") + format_number(min);
+  if (max < highest) {
+    if (!out.empty()) out += " and ";
+    out += (max_open ? "< " : "≤ ") + format_number(max);
+  }
+  if (out.empty()) out = "a finite number";
+  if (!unit.empty()) out += " " + std::string(unit);
+  return out;
+}
+
+SceneReader::SceneReader(const json& object, std::string path, json& echo)
+    : object_(&object), path_(std::move(path)), echo_(&echo) {
+  if (!object_->is_object()) {
+    throw SceneError((path_.empty() ? std::string("scene") : path_) + ": must be a JSON object, got " +
+                     type_name(*object_));
+  }
+  if (!echo_->is_object()) *echo_ = json::object();
+}
+
+std::string SceneReader::child_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+void SceneReader::fail(std::string_view key, const std::string& message) const {
+  throw SceneError(child_path(key) + ": " + message);
+}
+
+bool SceneReader::has(std::string_view key) const { return object_->contains(std::string(key)); }
+
+const json* SceneReader::find(std::string_view key) {
+  allow(key);
+  auto it = object_->find(std::string(key));
+  return it == object_->end() ? nullptr : &*it;
+}
+
+void SceneReader::allow(std::string_view key) {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+}
+
+std::optional<double> SceneReader::optional_number(std::string_view key, const Range& range) {
+  const json* v = find(key);
+  if (v == nullptr) return std::nullopt;
+  if (!v->is_number()) fail(key, "must be a number (" + range.describe() + "), got " + type_name(*v));
+  const double x = v->get<double>();
+  if (!std::isfinite(x)) fail(key, "must be a finite number (" + range.describe() + ")");
+  if (!range.contains(x)) fail(key, "= " + format_number(x) + " is out of range: must be " + range.describe());
+  (*echo_)[std::string(key)] = x;
+  return x;
+}
+
+double SceneReader::number(std::string_view key, const Range& range) {
+  auto v = optional_number(key, range);
+  if (!v) fail(key, "is required (" + range.describe() + ")");
+  return *v;
+}
+
+double SceneReader::number(std::string_view key, const Range& range, double fallback) {
+  auto v = optional_number(key, range);
+  if (v) return *v;
+  (*echo_)[std::string(key)] = fallback;
+  return fallback;
+}
+
+int SceneReader::integer(std::string_view key, long min, long max) {
+  const json* v = find(key);
+  const std::string allowed = "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  if (v == nullptr) fail(key, "is required (" + allowed + ")");
+  if (!v->is_number()) fail(key, "must be " + allowed + ", got " + type_name(*v));
+  const double x = v->get<double>();
+  if (!std::isfinite(x) || x != std::floor(x)) fail(key, "must be " + allowed + ", got " + format_number(x));
+  if (x < static_cast<double>(min) || x > static_cast<double>(max))
+    fail(key, "= " + format_number(x) + " is out of range: must be " + allowed);
+  (*echo_)[std::string(key)] = static_cast<long>(x);
+  return static_cast<int>(x);
+}
+
+int SceneReader::integer(std::string_view key, long min, long max, long fallback) {
+  if (!has(key)) {
+    allow(key);
+    (*echo_)[std::string(key)] = fallback;
+    return static_cast<int>(fallback);
+  }
+  return integer(key, min, max);
+}
+
+bool SceneReader::boolean(std::string_view key, bool fallback) {
+  const json* v = find(key);
+  if (v == nullptr) {
+    (*echo_)[std::string(key)] = fallback;
+    return fallback;
+  }
+  if (!v->is_boolean()) fail(key, "must be true or false, got " + type_name(*v));
+  (*echo_)[std::string(key)] = v->get<bool>();
+  return v->get<bool>();
+}
+
+std::string SceneReader::text(std::string_view key) {
+  const json* v = find(key);
+  if (v == nullptr) fail(key, "is required (a string)");
+  if (!v->is_string()) fail(key, "must be a string, got " + type_name(*v));
+  (*echo_)[std::string(key)] = *v;
+  return v->get<std::string>();
+}
+
+std::string SceneReader::text(std::string_view key, std::string_view fallback) {
+  if (!has(key)) {
+    allow(key);
+    (*echo_)[std::string(key)] = std::string(fallback);
+    return std::string(fallback);
+  }
+  return text(key);
+}
+
+std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed) {
+  std::vector<std::string> options(allowed.begin(), allowed.end());
+  const json* v = find(key);
+  if (v == nullptr) fail(key, "is required (one of: " + join_quoted(options) + ")");
+  if (!v->is_string()) fail(key, "must be one of: " + join_quoted(options) + "; got " + type_name(*v));
+  const std::string value = v->get<std::string>();
+  if (std::find(options.begin(), options.end(), value) == options.end()) {
+    const std::string guess = nearest(value, options);
+    fail(key, "'" + value + "' is not allowed: must be one of: " + join_quoted(options) +
+                  (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+  }
+  (*echo_)[std::string(key)] = value;
+  return value;
+}
+
+std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed,
+                                std::string_view fallback) {
+  if (!has(key)) {
+    allow(key);
+    (*echo_)[std::string(key)] = std::string(fallback);
+    return std::string(fallback);
+  }
+  return choice(key, allowed);
+}
+
+std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_view key, const Range& range,
+                                                                 std::size_t min_size, std::size_t max_size) {
+  const json* v = find(key);
+  if (v == nullptr) return std::nullopt;
+  const std::string shape = "a list of " + std::to_string(min_size) + (min_size == max_size ? "" : " to " + std::to_string(max_size)) +
+                            " numbers, each " + range.describe();
+  if (!v->is_array()) fail(key, "must be " + shape + ", got " + type_name(*v));
+  if (v->size() < min_size || v->size() > max_size)
+    fail(key, "has " + std::to_string(v->size()) + " entries: must be " + shape);
+  std::vector<double> out;
+  out.reserve(v->size());
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const json& e = (*v)[i];
+    const std::string element = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!e.is_number()) fail(element, "must be a number (" + range.describe() + "), got " + type_name(e));
+    const double x = e.get<double>();
+    if (!range.contains(x)) fail(element, "= " + format_number(x) + " is out of range: must be " + range.describe());
+    out.push_back(x);
+  }
+  (*echo_)[std::string(key)] = out;
+  return out;
+}
+
+std::vector<double> SceneReader::numbers(std::string_view key, const Range& range, std::size_t min_size,
+                                         std::size_t max_size) {
+  auto v = optional_numbers(key, range, min_size, max_size);
+  if (!v) fail(key, "is required (a list of numbers, each " + range.describe() + ")");
+  return *v;
+}
+
+SceneReader SceneReader::object(std::string_view key, bool required) {
+  static const json empty = json::object();
+  const json* v = find(key);
+  if (v == nullptr && required) fail(key, "is required (an object)");
+  if (v != nullptr && !v->is_object()) fail(key, "must be an object, got " + type_name(*v));
+  json& child_echo = (*echo_)[std::string(key)];
+  if (!child_echo.is_object()) child_echo = json::object();
+  return SceneReader(v != nullptr ? *v : empty, child_path(key), child_echo);
+}
+
+std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t min_size, std::size_t max_size) {
+  const json* v = find(key);
+  std::vector<SceneReader> out;
+  const std::string shape = "a list of " + std::to_string(min_size) + " to " + std::to_string(max_size) + " objects";
+  if (v == nullptr) {
+    if (min_size > 0) fail(key, "is required (" + shape + ")");
+    (*echo_)[std::string(key)] = json::array();
+    return out;
+  }
+  if (!v->is_array()) fail(key, "must be " + shape + ", got " + type_name(*v));
+  if (v->size() < min_size || v->size() > max_size)
+    fail(key, "has " + std::to_string(v->size()) + " entries: must be " + shape);
+  json& arr = (*echo_)[std::string(key)];
+  arr = json::array();
+  for (std::size_t i = 0; i < v->size(); ++i) arr.push_back(json::object());
+  for (std::size_t i = 0; i < v->size(); ++i)
+    out.emplace_back((*v)[i], child_path(key) + "[" + std::to_string(i) + "]", arr[i]);
+  return out;
+}
+
+std::optional<json> SceneReader::raw(std::string_view key) {
+  const json* v = find(key);
+  if (v == nullptr) return std::nullopt;
+  (*echo_)[std::string(key)] = *v;
+  return *v;
+}
+
+void SceneReader::finish(std::string_view context) {
+  for (const auto& [key, value] : object_->items()) {
+    if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+    const std::string guess = nearest(key, known_);
+    std::string message = "unknown key";
+    if (!context.empty()) message += " for " + std::string(context);
+    if (!guess.empty()) {
+      message += " (did you mean '" + guess + "'?)";
+    } else {
+      std::vector<std::string> sorted = known_;
+      std::sort(sorted.begin(), sorted.end());
+      message += "; allowed keys: " + join_quoted(sorted);
+    }
+    fail(key, message);
+  }
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string nearest(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = std::numeric_limits<std::size_t>::max();
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(word, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  }
+  // A typo changes a few characters; a word sharing a long prefix is also a good guess.
+  const std::size_t limit = std::max<std::size_t>(2, word.size() / 3);
+  if (best_distance <= limit) return best;
+  for (const auto& c : candidates) {
+    const std::size_t n = std::min(word.size(), c.size());
+    if (n >= 4 && std::string_view(c).substr(0, 4) == word.substr(0, 4)) return c;
+  }
+  return "";
+}
+
+json parse_scene_text(const std::string& text, const std::string& source_name) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw SceneError(source_name + ": file is empty (expected a JSON scene object)");
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    // Translate the byte offset into line and column for the message.
+    const std::size_t offset = e.byte == 0 ? 0 : std::min<std::size_t>(e.byte - 1, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < offset; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    std::string what = e.what();
+    const auto colon = what.rfind(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    throw SceneError(source_name + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                     ": invalid JSON: " + what);
+  }
+}
+
+json load_scene_file(const std::string& file_path) {
+  std::ifstream in(file_path, std::ios::binary);
+  if (!in) throw SceneError(file_path + ": cannot open the scene file (does it exist?)");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  json scene = parse_scene_text(buffer.str(), file_path);
+  if (!scene.is_object()) throw SceneError(file_path + ": the scene must be a JSON object ({...})");
+  return scene;
+}
+
+void apply_override(json& scene, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError("--set " + assignment + ": expected key.path=value");
+  const std::string key_path = assignment.substr(0, eq);
+  const std::string value_text = assignment.substr(eq + 1);
+  json value;
+  try {
+    value = json::parse(value_text);
+  } catch (const json::parse_error&) {
+    value = value_text;  // bare words are strings: --set material.model=ssmc
+  }
+  json* node = &scene;
+  std::string walked;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = key_path.find('.', start);
+    const std::string part = key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw SceneError("--set " + key_path + ": empty component in the key path");
+    walked += (walked.empty() ? "" : ".") + part;
+    if (node->is_array()) {
+      std::size_t index = 0;
+      try {
+        index = std::stoul(part);
+      } catch (...) {
+        throw SceneError("--set " + key_path + ": " + walked + " indexes a list and must be a number");
+      }
+      if (index >= node->size())
+        throw SceneError("--set " + key_path + ": index " + part + " is past the end of a list of " +
+                         std::to_string(node->size()));
+      node = &(*node)[index];
+    } else if (node->is_object()) {
+      if (dot != std::string::npos && !node->contains(part)) (*node)[part] = json::object();
+      node = &(*node)[part];
+    } else {
+      throw SceneError("--set " + key_path + ": " + walked + " is inside a value that is not an object");
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  *node = value;
+}
+
+}  // namespace ffp

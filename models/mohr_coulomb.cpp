@@ -1,0 +1,1 @@
+#include "models/mohr_coulomb.hpp"

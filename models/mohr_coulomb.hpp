@@ -1,0 +1,44 @@
+#pragma once
+/// Non-associated Mohr-Coulomb, elastic–perfectly plastic, with an exact
+/// return mapping in principal stresses (plane, triaxial-compression edge,
+/// triaxial-extension edge, apex).
+#include <span>
+
+#include "models/elastic.hpp"
+#include "models/voigt.hpp"
+
+namespace ffp {
+
+/// Which part of the yield surface a return mapping ended on.
+enum class ReturnRegion : unsigned char { elastic, plane, edge_compression, edge_extension, apex };
+
+struct MohrCoulombParameters {
+  ElasticConstants elastic;
+  double friction_angle_rad = 0.0;   ///< φ'
+  double dilatancy_angle_rad = 0.0;  ///< ψ (0 ≤ ψ ≤ φ)
+  double cohesion_Pa = 0.0;          ///< c' (0 for sand)
+};
+
+class MohrCoulomb {
+ public:
+  struct State {};  // perfectly plastic: no internal variables
+
+  explicit MohrCoulomb(const MohrCoulombParameters& parameters);
+
+  const MohrCoulombParameters& parameters() const { return parameters_; }
+  double p_wave_speed(double density_kg_m3) const { return parameters_.elastic.p_wave_speed(density_kg_m3); }
+
+  /// f = (σ1 − σ3) + (σ1 + σ3) sin φ − 2 c cos φ with σ1 ≥ σ2 ≥ σ3 (tension positive).
+  double yield_function(const Voigt& stress) const;
+
+  /// One point: elastic predictor, then the return onto the surface.
+  ReturnRegion update(Voigt& stress, const Voigt& strain_increment) const;
+
+  /// A batch of points with the same parameters.
+  void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const;
+
+ private:
+  MohrCoulombParameters parameters_;
+};
+
+}  // namespace ffp

@@ -1,0 +1,1 @@
+#include "models/strain_softening_mohr_coulomb.hpp"
