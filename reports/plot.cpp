@@ -1,0 +1,125 @@
+#include "reports/plot.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+bool gnuplot_available() {
+  static const bool found = [] {
+    const char* path = std::getenv("PATH");
+    if (path == nullptr) return false;
+    std::stringstream dirs(path);
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+      if (!dir.empty() && ::access((fs::path(dir) / "gnuplot").c_str(), X_OK) == 0) return true;
+    }
+    return false;
+  }();
+  return found;
+}
+
+namespace {
+
+/// gnuplot strings in single quotes: only the quote itself needs doubling.
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    out += c;
+    if (c == '\'') out += '\'';
+  }
+  return out + "'";
+}
+
+void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int& block) {
+  script << "set title " << quoted(plot.title) << "\n";
+  script << "set xlabel " << quoted(plot.x_label) << "\nset ylabel " << quoted(plot.y_label) << "\n";
+  script << (plot.log_x ? "set logscale x\n" : "unset logscale x\n");
+  script << (plot.log_y ? "set logscale y\n" : "unset logscale y\n");
+  script << (plot.reverse_y ? "set yrange [*:*] reverse\n" : "set yrange [*:*] noreverse\n");
+  script << "set key " << plot.key_position << "\n";
+  script << "plot ";
+  bool first = true;
+  for (const auto& s : plot.series) {
+    if (s.x.empty()) continue;
+    if (!first) script << ", ";
+    first = false;
+    script << "$data" << block << " using 1:2 with " << s.style << " title " << quoted(s.title);
+    data << "$data" << block << " << EOD\n";
+    char line[64];
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+        data << "\n";  // a gap, not a crash
+        continue;
+      }
+      std::snprintf(line, sizeof line, "%.9g %.9g\n", s.x[i], s.y[i]);
+      data << line;
+    }
+    data << "EOD\n";
+    ++block;
+  }
+  if (first) script << "NaN notitle";
+  script << "\n";
+}
+
+bool render(const std::string& body, const fs::path& png, int width, int height) {
+  if (!gnuplot_available()) {
+    static std::once_flag warned;
+    std::call_once(warned, [] { std::fputs("warning: gnuplot not found: plots are skipped\n", stderr); });
+    return false;
+  }
+  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
+  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
+  {
+    std::ofstream script(script_file);
+    script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
+    script << "set output " << quoted(temporary_png.string()) << "\n";
+    script << "set grid\nset encoding utf8\n" << body << "unset output\n";
+  }
+  const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
+  std::string log;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) log += buffer;
+    const int status = ::pclose(pipe);
+    std::error_code ignored;
+    fs::remove(script_file, ignored);
+    if (status != 0 || !fs::exists(temporary_png)) {
+      fs::remove(temporary_png, ignored);
+      std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
+      return false;
+    }
+    fs::rename(temporary_png, png);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool write_png(const Plot& plot, const fs::path& png) {
+  std::ostringstream data, script;
+  int block = 0;
+  write_panel(script, plot, data, block);
+  return render(data.str() + script.str(), png, plot.width_px, plot.height_px);
+}
+
+bool write_png_stack(const std::vector<Plot>& plots, const fs::path& png, int width_px, int panel_height_px) {
+  std::ostringstream data, script;
+  int block = 0;
+  script << "set multiplot layout " << plots.size() << ",1\n";
+  for (const auto& p : plots) write_panel(script, p, data, block);
+  script << "unset multiplot\n";
+  return render(data.str() + script.str(), png, width_px, panel_height_px * static_cast<int>(plots.size()));
+}
+
+}  // namespace ffp
