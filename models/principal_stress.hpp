@@ -1,0 +1,101 @@
+#pragma once
+/// Spectral decomposition of a symmetric stress, σ = Σ_k σ_k n_k ⊗ n_k with
+/// σ_1 ≥ σ_2 ≥ σ_3, and the way back to Voigt storage with new principal
+/// values on the same directions (what every principal-space return needs).
+///
+/// Fast path: when the 23 and 13 shears are exactly zero (the axisymmetric MPM,
+/// where θθ is always principal) the in-plane pair comes from a closed-form
+/// 2×2 (Mohr's circle: no trigonometry, no iteration). Otherwise Eigen's
+/// closed-form 3×3 solver. Coincident principal values are harmless: any basis
+/// of a repeated eigenspace rebuilds the same tensor as long as the new values
+/// keep them equal, which every Mohr-Coulomb return (plane, edge, apex) does.
+#include <Eigen/Eigenvalues>
+
+#include "models/voigt.hpp"
+
+namespace ffp {
+
+class PrincipalStresses {
+ public:
+  explicit PrincipalStresses(const Voigt& stress) {
+    if (stress[4] == 0.0 && stress[5] == 0.0) {
+      decompose_in_plane(stress);
+    } else {
+      decompose_general(stress);
+    }
+  }
+
+  /// σ_1 ≥ σ_2 ≥ σ_3 (tension positive: σ_3 is the major compression).
+  const Eigen::Vector3d& values() const { return values_; }
+  bool planar() const { return planar_; }
+
+  /// The tensor with these principal values (same order) on the same directions.
+  Voigt with_values(const Eigen::Vector3d& v) const {
+    Voigt out;
+    if (planar_) {
+      // Mohr's circle backwards: centre m, radius r, the same 2θ.
+      const double centre = 0.5 * (v[slot_major_in_plane_] + v[slot_minor_in_plane_]);
+      const double radius = 0.5 * (v[slot_major_in_plane_] - v[slot_minor_in_plane_]);
+      out << centre + radius * cos_2theta_, centre - radius * cos_2theta_, v[slot_33_], radius * sin_2theta_, 0.0,
+          0.0;
+      return out;
+    }
+    // σ_ij = Σ_k σ_k n_ik n_jk
+    const Eigen::Matrix3d& n = vectors_;
+    auto entry = [&](int i, int j) {
+      return v[0] * n(i, 0) * n(j, 0) + v[1] * n(i, 1) * n(j, 1) + v[2] * n(i, 2) * n(j, 2);
+    };
+    out << entry(0, 0), entry(1, 1), entry(2, 2), entry(0, 1), entry(1, 2), entry(0, 2);
+    return out;
+  }
+
+ private:
+  void decompose_in_plane(const Voigt& s) {
+    planar_ = true;
+    const double centre = 0.5 * (s[0] + s[1]);
+    const double half_difference = 0.5 * (s[0] - s[1]);
+    const double radius = std::sqrt(half_difference * half_difference + s[3] * s[3]);
+    if (radius > 0.0) {
+      cos_2theta_ = half_difference / radius;
+      sin_2theta_ = s[3] / radius;
+    } else {
+      cos_2theta_ = 1.0;
+      sin_2theta_ = 0.0;
+    }
+    const double major = centre + radius;
+    const double minor = centre - radius;
+    const double out_of_plane = s[2];
+    if (out_of_plane >= major) {
+      values_ << out_of_plane, major, minor;
+      slot_33_ = 0, slot_major_in_plane_ = 1, slot_minor_in_plane_ = 2;
+    } else if (out_of_plane >= minor) {
+      values_ << major, out_of_plane, minor;
+      slot_major_in_plane_ = 0, slot_33_ = 1, slot_minor_in_plane_ = 2;
+    } else {
+      values_ << major, minor, out_of_plane;
+      slot_major_in_plane_ = 0, slot_minor_in_plane_ = 1, slot_33_ = 2;
+    }
+  }
+
+  void decompose_general(const Voigt& s) {
+    planar_ = false;
+    Eigen::Matrix3d a;
+    a << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(a);
+    // Eigen sorts ascending; the plasticity convention is descending.
+    values_ = solver.eigenvalues().reverse();
+    vectors_ = solver.eigenvectors().rowwise().reverse();
+  }
+
+  Eigen::Vector3d values_;
+  bool planar_ = true;
+  double cos_2theta_ = 1.0;
+  double sin_2theta_ = 0.0;
+  int slot_33_ = 2;
+  int slot_major_in_plane_ = 0;
+  int slot_minor_in_plane_ = 1;
+  Eigen::Matrix3d vectors_;
+};
+
+}  // namespace ffp

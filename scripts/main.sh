@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Set up, build Release and run the main job: the default FFP validation study
+# and its report (report/report.md with figures).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+./build/release/drivers/app/ffp report --out report "$@"

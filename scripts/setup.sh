@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Install the Debian packages ffp needs. Idempotent: on a machine that has
+# everything it installs nothing and says so.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build
+  libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
+  catch2 libbenchmark-dev gnuplot-nox
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} dependencies are already installed; nothing to do"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then sudo="sudo"; else
+    echo "setup: missing ${missing[*]} and not root (no sudo): install them as root" >&2
+    exit 1
+  fi
+fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done"

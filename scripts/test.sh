@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Set up, build and run the whole test suite.
+#   bash scripts/test.sh             Release build (build/release)
+#   bash scripts/test.sh --sanitize  AddressSanitizer + UBSan build (build/asan)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset=release
+if [ "${1:-}" = "--sanitize" ]; then preset=asan; fi
+
+bash scripts/setup.sh
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset"
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+ctest --preset "$preset" -j 2

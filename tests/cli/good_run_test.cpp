@@ -1,0 +1,99 @@
+/// A good scene runs, writes summary.json with the scene echoed back (defaults
+/// filled in), and replaces an older result only when complete.
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <fstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli_harness.hpp"
+
+using ffp::test::good_point_scene;
+using ffp::test::run_ffp;
+using ffp::test::Scratch;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+TEST_CASE("a good scene writes summary.json with the scene and its defaults", "[cli]") {
+  Scratch scratch;
+  const auto file = scratch.write_json("scene.json", good_point_scene());
+  const auto r = run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(scratch.path() / "result" / "summary.json");
+  const json summary = json::parse(in);
+  CHECK(summary["scene"]["kind"] == "point");
+  CHECK(summary["scene"]["material"]["E_kPa"] == 2500.0);
+  // Defaults the scene left out are written back.
+  CHECK(summary["scene"]["material"]["c_peak_kPa"] == 0.0);
+  CHECK(summary["scene"]["material"]["psi_peak_deg"] == 0.0);
+  CHECK(summary.contains("wall_time_s"));
+  CHECK(summary["steps"].get<long>() > 0);
+  CHECK(fs::exists(scratch.path() / "result" / "history.csv"));
+  // Only the result itself is left beside it: no temporary directories.
+  for (const auto& name : scratch.entries()) CHECK((name == "result" || name == "scene.json"));
+}
+
+TEST_CASE("--set overrides a key and the summary echoes the override", "[cli]") {
+  Scratch scratch;
+  const auto file = scratch.write_json("scene.json", good_point_scene());
+  const auto r = run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"},
+                         scratch.path());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(scratch.path() / "result" / "summary.json");
+  CHECK(json::parse(in)["scene"]["material"]["E_kPa"] == 5000.0);
+}
+
+TEST_CASE("a complete run replaces an older result", "[cli]") {
+  Scratch scratch;
+  fs::create_directories(scratch.path() / "result");
+  scratch.write("result/marker.txt", "old");
+  const auto file = scratch.write_json("scene.json", good_point_scene());
+  REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path()).exit_code == 0);
+  CHECK_FALSE(fs::exists(scratch.path() / "result" / "marker.txt"));
+  CHECK(fs::exists(scratch.path() / "result" / "summary.json"));
+}
+
+TEST_CASE("SIGTERM during a run leaves no result directory", "[cli]") {
+  Scratch scratch;
+  json scene = good_point_scene();
+  scene["path"]["increments"] = 200000000;  // far longer than the test waits
+  const auto file = scratch.write_json("scene.json", scene);
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    if (::chdir(scratch.path().c_str()) != 0) ::_exit(99);
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devnull, STDERR_FILENO);
+    ::execl(FFP_BINARY, FFP_BINARY, "run", file.c_str(), "--out", "result", static_cast<char*>(nullptr));
+    ::_exit(98);
+  }
+  // Wait until the run has started writing into its temporary directory.
+  bool started = false;
+  for (int i = 0; i < 200 && !started; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    for (const auto& name : scratch.entries()) started = started || name.find(".result.tmp-") == 0;
+  }
+  CHECK(started);
+  ::kill(child, SIGTERM);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  for (const auto& name : scratch.entries()) CHECK(name == "scene.json");
+}
+
+TEST_CASE("--version and --help answer and succeed", "[cli]") {
+  Scratch scratch;
+  const auto v = run_ffp({"--version"}, scratch.path());
+  CHECK(v.exit_code == 0);
+  CHECK(v.out.rfind("ffp ", 0) == 0);
+  const auto h = run_ffp({"--help"}, scratch.path());
+  CHECK(h.exit_code == 0);
+  CHECK(h.out.find("ffp run") != std::string::npos);
+}
