@@ -153,9 +153,4 @@ int command_report(const Arguments&) {
   return 1;
 }
 
-int command_sweep(const Arguments&) {
-  std::fputs("ffp sweep: not available yet in this version\n", stderr);
-  return 1;
-}
-
 }  // namespace ffp

@@ -1,0 +1,167 @@
+#include "reports/run_pool.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/output/interrupt.hpp"
+
+extern char** environ;
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull) {
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string read_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Contents of the files a scene refers to by relative or absolute path.
+void collect_referenced_files(const nlohmann::json& node, const fs::path& scene_dir, std::string& out) {
+  if (node.is_object() || node.is_array()) {
+    for (const auto& child : node) collect_referenced_files(child, scene_dir, out);
+  } else if (node.is_string()) {
+    const std::string value = node.get<std::string>();
+    if (value.size() > 4 && (value.ends_with(".csv") || value.ends_with(".json"))) {
+      const fs::path candidate = fs::path(value).is_absolute() ? fs::path(value) : scene_dir / value;
+      if (fs::is_regular_file(candidate)) out += read_file(candidate);
+    }
+  }
+}
+
+std::string slug(const std::string& label) {
+  std::string s;
+  for (char c : label) s += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
+  return s.substr(0, 60);
+}
+
+std::string last_line(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+}  // namespace
+
+std::string run_key(const RunRequest& request, const std::string& program_version) {
+  std::string material = nlohmann::json::parse(read_file(request.scene_file)).dump();
+  for (const auto& o : request.overrides) material += "\n--set " + o;
+  collect_referenced_files(nlohmann::json::parse(read_file(request.scene_file)), request.scene_file.parent_path(),
+                           material);
+  material += "\n" + program_version;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(material)));
+  return hex;
+}
+
+std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
+                                const fs::path& cache_root, const std::string& program_version, int jobs) {
+  fs::create_directories(cache_root);
+  std::vector<RunOutcome> outcomes(requests.size());
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + run_key(requests[i], program_version));
+    if (fs::exists(outcomes[i].out_dir / "summary.json")) {
+      outcomes[i].cached = true;
+      outcomes[i].exit_code = 0;
+    } else {
+      pending.push_back(i);
+    }
+  }
+  const std::size_t cached = requests.size() - pending.size();
+  std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
+
+  struct Running {
+    std::size_t index;
+    std::chrono::steady_clock::time_point start;
+    fs::path log;
+  };
+  std::map<pid_t, Running> running;
+  std::size_t next = 0, finished = 0;
+  auto launch = [&](std::size_t i) {
+    const RunRequest& r = requests[i];
+    std::vector<std::string> args = {ffp_binary.string(), "run", r.scene_file.string(), "--out",
+                                     outcomes[i].out_dir.string(), "--quiet"};
+    for (const auto& o : r.overrides) {
+      args.push_back("--set");
+      args.push_back(o);
+    }
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const fs::path log = cache_root / ("." + slug(r.label) + ".log");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid = 0;
+    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (rc != 0) {
+      outcomes[i].exit_code = 127;
+      outcomes[i].error = "could not start " + args[0];
+      ++finished;
+      return;
+    }
+    running[pid] = Running{i, std::chrono::steady_clock::now(), log};
+  };
+
+  const std::size_t parallel = static_cast<std::size_t>(std::max(1, jobs));
+  while (finished < pending.size()) {
+    while (running.size() < parallel && next < pending.size()) launch(pending[next++]);
+    if (running.empty()) continue;
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, 0);
+    if (interrupt_requested()) {
+      for (const auto& [child, _] : running) ::kill(child, SIGTERM);
+      while (::waitpid(-1, &status, 0) > 0) {
+      }
+      throw_if_interrupted();
+    }
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    RunOutcome& o = outcomes[it->second.index];
+    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    o.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.start).count();
+    if (o.exit_code != 0) o.error = last_line(it->second.log);
+    std::error_code ignored;
+    if (o.exit_code == 0) fs::remove(it->second.log, ignored);
+    ++finished;
+    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, requests.size(),
+                 requests[it->second.index].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
+    running.erase(it);
+  }
+  return outcomes;
+}
+
+}  // namespace ffp

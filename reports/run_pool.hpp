@@ -1,0 +1,35 @@
+#pragma once
+/// Runs scenes as independent `ffp run` processes, a few at a time, with a
+/// cache keyed by the scene's content and the program version. Each run is a
+/// separate process so a study can be handed to a cluster scheduler unchanged.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ffp {
+
+struct RunRequest {
+  std::string label;                    ///< shown in progress and tables
+  std::filesystem::path scene_file;
+  std::vector<std::string> overrides;   ///< "key=value", as for --set
+};
+
+struct RunOutcome {
+  std::filesystem::path out_dir;        ///< where summary.json and history.csv are
+  int exit_code = -1;
+  bool cached = false;
+  double wall_time_s = 0.0;             ///< of this invocation (0 when cached)
+  std::string error;                    ///< last stderr line when it failed
+};
+
+/// Content key of a run: the canonical scene JSON, the overrides, the content
+/// of every file the scene names (e.g. a lab CSV) and the program version.
+std::string run_key(const RunRequest& request, const std::string& program_version);
+
+/// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/,
+/// skipping those whose summary.json already exists. Progress lines go to stderr.
+std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
+                                const std::filesystem::path& cache_root, const std::string& program_version,
+                                int jobs);
+
+}  // namespace ffp
