@@ -148,9 +148,4 @@ int command_bench(const Arguments&) {
   return 1;
 }
 
-int command_report(const Arguments&) {
-  std::fputs("ffp report: not available yet in this version\n", stderr);
-  return 1;
-}
-
 }  // namespace ffp

@@ -1,0 +1,144 @@
+/// `ffp report`: run the validation studies (cached) and write report.md.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "drivers/app/commands.hpp"
+#include "drivers/app/version.hpp"
+#include "drivers/output/interrupt.hpp"
+#include "drivers/output/run_directory.hpp"
+#include "drivers/scene/scene_error.hpp"
+#include "reports/markdown.hpp"
+#include "reports/study.hpp"
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string machine_description() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return buffer;
+}
+
+}  // namespace
+
+int command_report(const Arguments& args) {
+  try {
+    fs::path out = "report";
+    fs::path cache = "results/cache";
+    fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
+    std::string only;
+    int jobs = 1;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      const std::string& a = args[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= args.size()) throw SceneError(a + ": needs a value");
+        return args[++i];
+      };
+      if (a == "--out") {
+        out = value();
+      } else if (a == "--cache") {
+        cache = value();
+      } else if (a == "--scenes") {
+        scenes = value();
+      } else if (a == "--only") {
+        only = value();
+      } else if (a == "--jobs") {
+        const std::string n = value();
+        jobs = std::atoi(n.c_str());
+        if (jobs < 1 || jobs > 64) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 64]");
+      } else {
+        throw SceneError("ffp report: unknown option '" + a + "' (try ffp --help)");
+      }
+    }
+    if (!fs::is_directory(scenes)) throw SceneError("--scenes: '" + scenes.string() + "' is not a folder of scenes");
+
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Study> studies = validation_studies(scenes);
+    if (!only.empty()) {
+      std::erase_if(studies, [&](const Study& s) { return s.title.find(only) == std::string::npos; });
+      if (studies.empty()) throw SceneError("--only: no study title contains '" + only + "'");
+    }
+    std::vector<RunRequest> all;
+    for (const auto& s : studies) all.insert(all.end(), s.runs.begin(), s.runs.end());
+    std::fprintf(stderr, "report: %zu studies, %zu runs\n", studies.size(), all.size());
+    const std::vector<RunOutcome> outcomes = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs);
+
+    RunDirectory directory(out);
+    fs::create_directories(directory.path() / "figures");
+    fs::create_directories(directory.path() / "tables");
+    Markdown document;
+    document.raw("# ffp validation report\n\n");
+    document.paragraph(
+        "Reproduction of the studies of Zambrano-Cruzatty & Yerro (2020), *Numerical simulation of a free fall "
+        "penetrometer deployment using the material point method*, Soils and Foundations 60, with the ffp "
+        "axisymmetric MPM solver and its constitutive-model testbed. Every number below was computed by the runs "
+        "listed at the end; nothing is copied from the paper except the values in the 'paper' columns.");
+    document.table({"", ""}, {{"program", version_string()},
+                              {"machine", machine_description()},
+                              {"generated", today()},
+                              {"command", "ffp report --jobs " + std::to_string(jobs)}});
+
+    std::size_t offset = 0;
+    std::vector<std::vector<std::string>> run_rows;
+    int failures = 0;
+    for (const auto& s : studies) {
+      std::vector<RunOutcome> mine(outcomes.begin() + static_cast<long>(offset),
+                                   outcomes.begin() + static_cast<long>(offset + s.runs.size()));
+      offset += s.runs.size();
+      StudyResults results(s.runs, mine);
+      for (std::size_t i = 0; i < results.size(); ++i) {
+        const auto summary = results.summary(i);
+        if (!results.ok(i)) ++failures;
+        run_rows.push_back({s.runs[i].label, results.ok(i) ? "ok" : "FAILED: " + results.outcome(i).error,
+                            summary.contains("wall_time_s") ? fixed(summary["wall_time_s"].get<double>(), 2) : "–",
+                            results.outcome(i).cached ? "cached" : "ran now",
+                            results.outcome(i).out_dir.filename().string()});
+      }
+      document.heading(2, s.title);
+      StudyOutput output{document, directory.path() / "figures", "figures", directory.path() / "tables"};
+      s.write(results, output);
+    }
+
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    document.heading(2, "Runs");
+    document.paragraph("Wall time of each run as recorded when it ran (cached runs keep their original time). This "
+                       "report took " + fixed(total, 1) + " s to assemble, including the runs made now.");
+    document.table({"run", "status", "wall time [s]", "this time", "folder (in " + cache.string() + ")"}, run_rows);
+    write_file_atomically(directory.path() / "report.md", document.str());
+    directory.commit();
+    std::fprintf(stderr, "wrote %s (%.1f s)%s\n", (out / "report.md").string().c_str(), total,
+                 failures ? (" — " + std::to_string(failures) + " run(s) FAILED").c_str() : "");
+    return failures == 0 ? 0 : 1;
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const Interrupted&) {
+    std::fputs("interrupted: no report written\n", stderr);
+    return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace ffp

@@ -1,0 +1,13 @@
+/// The list of studies in the validation report, in reading order.
+#include "reports/studies/studies.hpp"
+#include "reports/study.hpp"
+
+namespace ffp {
+
+std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
+  std::vector<Study> studies;
+  (void)scenes_dir;
+  return studies;
+}
+
+}  // namespace ffp

@@ -1,0 +1,25 @@
+#include "reports/study.hpp"
+
+#include <fstream>
+
+namespace ffp {
+
+nlohmann::json StudyResults::summary(std::size_t i) const {
+  if (!ok(i)) return nlohmann::json::object();
+  std::ifstream in(outcomes_[i].out_dir / "summary.json");
+  if (!in) return nlohmann::json::object();
+  return nlohmann::json::parse(in);
+}
+
+CsvData StudyResults::history(std::size_t i) const {
+  if (!ok(i) || !std::filesystem::exists(outcomes_[i].out_dir / "history.csv")) return {};
+  return read_numeric_csv(outcomes_[i].out_dir / "history.csv");
+}
+
+double StudyResults::total_wall_time_s() const {
+  double total = 0.0;
+  for (std::size_t i = 0; i < size(); ++i) total += summary(i).value("wall_time_s", 0.0);
+  return total;
+}
+
+}  // namespace ffp

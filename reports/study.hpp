@@ -1,0 +1,55 @@
+#pragma once
+/// A study of the validation report: the runs it needs and how it turns their
+/// outputs into figures, tables and text.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/output/csv_writer.hpp"
+#include "reports/markdown.hpp"
+#include "reports/run_pool.hpp"
+
+namespace ffp {
+
+/// What a study's writer sees: its own runs' outcomes, in the order it asked.
+class StudyResults {
+ public:
+  StudyResults(std::vector<RunRequest> requests, std::vector<RunOutcome> outcomes)
+      : requests_(std::move(requests)), outcomes_(std::move(outcomes)) {}
+  std::size_t size() const { return outcomes_.size(); }
+  bool ok(std::size_t i) const { return outcomes_[i].exit_code == 0; }
+  const RunRequest& request(std::size_t i) const { return requests_[i]; }
+  const RunOutcome& outcome(std::size_t i) const { return outcomes_[i]; }
+  nlohmann::json summary(std::size_t i) const;  ///< {} when the run failed
+  CsvData history(std::size_t i) const;          ///< empty when the run failed
+  std::filesystem::path file(std::size_t i, const std::string& relative) const {
+    return outcomes_[i].out_dir / relative;
+  }
+  /// Sum of the run wall times recorded in the summaries.
+  double total_wall_time_s() const;
+
+ private:
+  std::vector<RunRequest> requests_;
+  std::vector<RunOutcome> outcomes_;
+};
+
+struct StudyOutput {
+  Markdown& document;
+  std::filesystem::path figures_dir;   ///< write PNGs here
+  std::string figures_relative;        ///< how report.md refers to figures_dir
+  std::filesystem::path tables_dir;    ///< write CSV tables here
+};
+
+struct Study {
+  std::string title;
+  std::vector<RunRequest> runs;
+  std::function<void(const StudyResults&, StudyOutput&)> write;
+};
+
+/// Every study of the validation report, reading scenes from `scenes_dir`.
+std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir);
+
+}  // namespace ffp
