@@ -1,0 +1,44 @@
+#pragma once
+/// The penetrometer's exact outline in the (r, z) half-plane: a cone tip, a
+/// rounded edge and a cylindrical body with a flat top. The contact stage takes
+/// its normals from here rather than from a noisy mass gradient.
+namespace ffp::mpm {
+
+struct PenetrometerShape {
+  double cone_apex_angle_rad = 1.0471975511965976;  ///< full apex angle (60°)
+  double base_radius_m = 0.04375;
+  double edge_radius_m = 0.005;  ///< fillet between cone and body (0: sharp)
+  double body_length_m = 0.5;    ///< cylinder above the cone's base
+
+  double cone_height_m() const;  ///< R / tan(apex/2), 7.58 cm for the BlueDrop
+  double total_length_m() const { return cone_height_m() + body_length_m; }
+  double volume_m3() const;      ///< of the solid of revolution (fillet included)
+};
+
+/// Closest point of the outline to a query point, in local coordinates (tip at
+/// the origin, z up along the axis).
+struct SurfaceQuery {
+  double signed_distance_m;  ///< < 0 inside the penetrometer
+  double normal_r, normal_z; ///< unit outward normal of the surface at the closest point
+};
+
+class PenetrometerGeometry {
+ public:
+  explicit PenetrometerGeometry(const PenetrometerShape& shape);
+  const PenetrometerShape& shape() const { return shape_; }
+
+  /// Query with the tip at z = tip_z_m (global coordinates), r ≥ 0.
+  SurfaceQuery query(double r_m, double z_m, double tip_z_m) const;
+  /// Outer radius of the outline at height h above the tip (0 outside [0, length]).
+  double radius_at(double height_above_tip_m) const;
+  bool contains(double r_m, double z_m, double tip_z_m) const { return query(r_m, z_m, tip_z_m).signed_distance_m < 0; }
+
+ private:
+  PenetrometerShape shape_;
+  double sin_half_ = 0, cos_half_ = 0;
+  double cone_end_r_ = 0, cone_end_z_ = 0;       // cone–fillet tangent point
+  double fillet_center_r_ = 0, fillet_center_z_ = 0;
+  double top_z_ = 0;
+};
+
+}  // namespace ffp::mpm
