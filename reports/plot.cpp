@@ -71,6 +71,42 @@ void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int
   script << "\n";
 }
 
+void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream& data, int& block) {
+  script << "set title " << quoted(map.title) << "\n";
+  script << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n";
+  script << "unset logscale x\nunset logscale y\nset yrange [*:*] noreverse\n";
+  script << (map.equal_axes ? "set size ratio -1\n" : "set size noratio\n");
+  script << "set cblabel " << quoted(map.colour_label) << "\n";
+  script << "set palette rgbformulae 33,13,10\n";
+  if (map.colour_max > map.colour_min)
+    script << "set cbrange [" << map.colour_min << ":" << map.colour_max << "]\n";
+  else
+    script << "set cbrange [*:*]\n";
+  script << "set key off\n";
+  const int points_block = block++;
+  data << "$data" << points_block << " << EOD\n";
+  char line[96];
+  for (std::size_t i = 0; i < map.x.size() && i < map.y.size() && i < map.value.size(); ++i) {
+    if (!std::isfinite(map.x[i]) || !std::isfinite(map.y[i]) || !std::isfinite(map.value[i])) continue;
+    std::snprintf(line, sizeof line, "%.6g %.6g %.6g\n", map.x[i], map.y[i], map.value[i]);
+    data << line;
+  }
+  data << "EOD\n";
+  script << "plot $data" << points_block << " using 1:2:3 with points pt 5 ps " << map.point_size
+         << " palette notitle";
+  for (const auto& s : map.overlays) {
+    data << "$data" << block << " << EOD\n";
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      std::snprintf(line, sizeof line, "%.9g %.9g\n", s.x[i], s.y[i]);
+      data << line;
+    }
+    data << "EOD\n";
+    script << ", $data" << block << " using 1:2 with " << s.style << " lc rgb 'black' lw 2 notitle";
+    ++block;
+  }
+  script << "\nset size noratio\n";
+}
+
 bool render(const std::string& body, const fs::path& png, int width, int height) {
   if (!gnuplot_available()) {
     static std::once_flag warned;
@@ -111,6 +147,22 @@ bool write_png(const Plot& plot, const fs::path& png) {
   int block = 0;
   write_panel(script, plot, data, block);
   return render(data.str() + script.str(), png, plot.width_px, plot.height_px);
+}
+
+bool write_png(const ColourMap& map, const fs::path& png) {
+  std::ostringstream data, script;
+  int block = 0;
+  write_colour_panel(script, map, data, block);
+  return render(data.str() + script.str(), png, map.width_px, map.height_px);
+}
+
+bool write_png_row(const std::vector<ColourMap>& maps, const fs::path& png, int panel_width_px, int height_px) {
+  std::ostringstream data, script;
+  int block = 0;
+  script << "set multiplot layout 1," << maps.size() << "\n";
+  for (const auto& m : maps) write_colour_panel(script, m, data, block);
+  script << "unset multiplot\n";
+  return render(data.str() + script.str(), png, panel_width_px * static_cast<int>(maps.size()), height_px);
 }
 
 bool write_png_stack(const std::vector<Plot>& plots, const fs::path& png, int width_px, int panel_height_px) {

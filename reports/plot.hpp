@@ -27,12 +27,34 @@ struct Plot {
   int height_px = 600;
 };
 
+/// Points coloured by a value (e.g. particles coloured by deviatoric strain,
+/// as in the paper's Fig. 9), with optional line overlays (an outline).
+struct ColourMap {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  std::string colour_label;
+  std::vector<double> x, y, value;
+  std::vector<Series> overlays;
+  double point_size = 0.4;
+  bool equal_axes = true;
+  double colour_min = 0.0, colour_max = 0.0;  ///< both 0: automatic range
+  int width_px = 700;
+  int height_px = 700;
+};
+
 /// Write `plot` to `png` (via a temporary file). Returns false if skipped.
 bool write_png(const Plot& plot, const std::filesystem::path& png);
 
 /// Several plots stacked in one PNG (one column), e.g. depth/velocity/deceleration.
 bool write_png_stack(const std::vector<Plot>& plots, const std::filesystem::path& png, int width_px = 900,
                      int panel_height_px = 360);
+
+bool write_png(const ColourMap& map, const std::filesystem::path& png);
+
+/// Several colour maps side by side in one PNG (one row).
+bool write_png_row(const std::vector<ColourMap>& maps, const std::filesystem::path& png, int panel_width_px = 420,
+                   int height_px = 520);
 
 /// True when a gnuplot executable is on PATH.
 bool gnuplot_available();
