@@ -1,1 +1,33 @@
 #include "models/mohr_coulomb.hpp"
+
+#include <cassert>
+
+#include "models/principal_stress.hpp"
+
+namespace ffp {
+
+MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters)
+    : parameters_(parameters),
+      strength_(MohrCoulombStrength::of(parameters.friction_angle_rad, parameters.dilatancy_angle_rad,
+                                        parameters.cohesion_Pa)),
+      stiffness_(PrincipalStiffness::of(parameters.elastic)) {}
+
+double MohrCoulomb::yield_function(const Voigt& stress) const {
+  return strength_.yield(PrincipalStresses(stress).values());
+}
+
+ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) const {
+  const Voigt trial = stress + parameters_.elastic.stress_increment(strain_increment);
+  const PrincipalStresses principal(trial);
+  Eigen::Vector3d returned = principal.values();
+  const ReturnRegion region = return_to_mohr_coulomb(returned, strength_, stiffness_);
+  stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
+  return region;
+}
+
+void MohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const {
+  assert(stress.size() == strain_increment.size());
+  for (std::size_t i = 0; i < stress.size(); ++i) update(stress[i], strain_increment[i]);
+}
+
+}  // namespace ffp

@@ -1,20 +1,18 @@
 #pragma once
 /// Non-associated Mohr-Coulomb, elastic–perfectly plastic, with an exact
 /// return mapping in principal stresses (plane, triaxial-compression edge,
-/// triaxial-extension edge, apex).
+/// triaxial-extension edge, apex): see models/mohr_coulomb_return.hpp.
 #include <span>
 
 #include "models/elastic.hpp"
+#include "models/mohr_coulomb_return.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp {
 
-/// Which part of the yield surface a return mapping ended on.
-enum class ReturnRegion : unsigned char { elastic, plane, edge_compression, edge_extension, apex };
-
 struct MohrCoulombParameters {
   ElasticConstants elastic;
-  double friction_angle_rad = 0.0;   ///< φ'
+  double friction_angle_rad = 0.0;   ///< φ' (0 ≤ φ < 90°; 0 is Tresca)
   double dilatancy_angle_rad = 0.0;  ///< ψ (0 ≤ ψ ≤ φ)
   double cohesion_Pa = 0.0;          ///< c' (0 for sand)
 };
@@ -39,6 +37,8 @@ class MohrCoulomb {
 
  private:
   MohrCoulombParameters parameters_;
+  MohrCoulombStrength strength_;
+  PrincipalStiffness stiffness_;
 };
 
 }  // namespace ffp

@@ -102,8 +102,6 @@ inline ReturnRegion return_to_mohr_coulomb(Eigen::Vector3d& stress, const MohrCo
     const double difference = (f_trial - f_b) / (plane_stiffness - coupling);
     const double lambda_a = 0.5 * (sum + difference);
     const double lambda_b = 0.5 * (sum - difference);
-    const double lambda_tolerance = tolerance / plane_stiffness;
-    if (lambda_a < -lambda_tolerance || lambda_b < -lambda_tolerance) return false;
     out = stress - lambda_a * dg_a - lambda_b * dg_b;
     // Make the two equal stresses exactly equal (they differ only by rounding).
     if (compression) {
@@ -111,30 +109,31 @@ inline ReturnRegion return_to_mohr_coulomb(Eigen::Vector3d& stress, const MohrCo
     } else {
       out[1] = out[2] = 0.5 * (out[1] + out[2]);
     }
-    return out[0] - out[2] >= -tolerance;  // beyond the apex the edge line leaves the surface
+    const double lambda_tolerance = tolerance / plane_stiffness;
+    return lambda_a >= -lambda_tolerance && lambda_b >= -lambda_tolerance &&
+           out[0] - out[2] >= -tolerance;  // beyond the apex the edge line leaves the surface
   };
 
-  Eigen::Vector3d on_edge;
-  if (!upper_order && edge(true, on_edge)) {
-    stress = on_edge;
-    return ReturnRegion::edge_compression;
+  // The edge the plane return overshot first; the other one only if that fails.
+  const bool compression_first = !upper_order;
+  Eigen::Vector3d first_edge, second_edge;
+  if (edge(compression_first, first_edge)) {
+    stress = first_edge;
+    return compression_first ? ReturnRegion::edge_compression : ReturnRegion::edge_extension;
   }
-  if (!lower_order && edge(false, on_edge)) {
-    stress = on_edge;
-    return ReturnRegion::edge_extension;
+  if (edge(!compression_first, second_edge)) {
+    stress = second_edge;
+    return compression_first ? ReturnRegion::edge_extension : ReturnRegion::edge_compression;
   }
   if (sf > 0.0) {
     stress.setConstant(strength.cohesion_Pa * strength.cos_phi / sf);  // c cot φ
     return ReturnRegion::apex;
   }
-  // Tresca (φ = 0) has no apex; its edges cover the whole corner region, so
-  // this is reached only through rounding at a corner: keep the closer edge.
-  Eigen::Vector3d compression_edge, extension_edge;
-  edge(true, compression_edge);
-  edge(false, extension_edge);
-  const bool compression = std::abs(strength.yield(compression_edge)) <= std::abs(strength.yield(extension_edge));
-  stress = compression ? compression_edge : extension_edge;
-  return compression ? ReturnRegion::edge_compression : ReturnRegion::edge_extension;
+  // Tresca (φ = 0) has no apex and its edges cover the whole corner region,
+  // so this is reached only through rounding at a corner: keep the closer edge.
+  const bool first = std::abs(strength.yield(first_edge)) <= std::abs(strength.yield(second_edge));
+  stress = first ? first_edge : second_edge;
+  return first == compression_first ? ReturnRegion::edge_compression : ReturnRegion::edge_extension;
 }
 
 }  // namespace ffp

@@ -83,9 +83,46 @@ class PrincipalStresses {
     a << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(a);
-    // Eigen sorts ascending; the plasticity convention is descending.
-    values_ = solver.eigenvalues().reverse();
-    vectors_ = solver.eigenvectors().rowwise().reverse();
+    // The closed form loses accuracy where two eigenvalues nearly coincide
+    // (~1e-8 relative: exactly the states an edge return produces). A Jacobi
+    // polish of Vᵀ A V, already nearly diagonal, restores full precision.
+    Eigen::Matrix3d v = solver.eigenvectors();
+    Eigen::Matrix3d b = v.transpose() * a * v;
+    for (int sweep = 0; sweep < 4; ++sweep) {
+      const double off = std::abs(b(0, 1)) + std::abs(b(0, 2)) + std::abs(b(1, 2));
+      const double diagonal = std::abs(b(0, 0)) + std::abs(b(1, 1)) + std::abs(b(2, 2));
+      if (!(off > 1e-18 * diagonal)) break;
+      rotate(b, v, 0, 1);
+      rotate(b, v, 0, 2);
+      rotate(b, v, 1, 2);
+    }
+    // Descending order, columns following their values.
+    int order[3] = {0, 1, 2};
+    if (b(order[0], order[0]) < b(order[1], order[1])) std::swap(order[0], order[1]);
+    if (b(order[1], order[1]) < b(order[2], order[2])) std::swap(order[1], order[2]);
+    if (b(order[0], order[0]) < b(order[1], order[1])) std::swap(order[0], order[1]);
+    for (int k = 0; k < 3; ++k) {
+      values_[k] = b(order[k], order[k]);
+      vectors_.col(k) = v.col(order[k]);
+    }
+  }
+
+  /// One Jacobi rotation annihilating b(p, q) (Golub & Van Loan, sym.schur2); v accumulates it.
+  static void rotate(Eigen::Matrix3d& b, Eigen::Matrix3d& v, int p, int q) {
+    if (b(p, q) == 0.0) return;
+    const double tau = (b(q, q) - b(p, p)) / (2.0 * b(p, q));
+    const double t = std::abs(tau) > 1e150 ? 0.5 / tau
+                                           : (tau >= 0.0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1.0 + tau * tau));
+    const double c = 1.0 / std::sqrt(1.0 + t * t);
+    const double s = t * c;
+    Eigen::Matrix3d j = Eigen::Matrix3d::Identity();
+    j(p, p) = c;
+    j(p, q) = s;
+    j(q, p) = -s;
+    j(q, q) = c;
+    b = j.transpose() * b * j;
+    b(p, q) = b(q, p) = 0.0;
+    v = v * j;
   }
 
   Eigen::Vector3d values_;

@@ -1,1 +1,126 @@
 #include "models/strain_softening_mohr_coulomb.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "models/principal_stress.hpp"
+
+namespace ffp {
+
+StrainSofteningMohrCoulomb::StrainSofteningMohrCoulomb(const StrainSofteningParameters& parameters)
+    : parameters_(parameters), stiffness_(PrincipalStiffness::of(parameters.elastic)) {}
+
+StrainSofteningMohrCoulomb::Peaks StrainSofteningMohrCoulomb::peaks(const State& state,
+                                                                    double mean_pressure_Pa) const {
+  const StrainSofteningParameters& p = parameters_;
+  Peaks out;
+  out.friction_rad = p.rate.peak_friction_rad(p.friction_peak_rad, state.strain_rate_per_s);
+  out.dilatancy_rad = p.relative_density ? bolton_peak_dilatancy_rad(*p.relative_density, 1e-3 * mean_pressure_Pa)
+                                         : p.dilatancy_peak_rad;
+  return out;
+}
+
+MohrCoulombStrength StrainSofteningMohrCoulomb::strength(const Peaks& peaks, double decay) const {
+  const StrainSofteningParameters& p = parameters_;
+  // Yerro et al. (2016): x = x_r + (x_p − x_r) exp(−η ε_d^p) for φ', c' and ψ.
+  const double phi = p.friction_residual_rad + (peaks.friction_rad - p.friction_residual_rad) * decay;
+  const double cohesion = p.cohesion_residual_Pa + (p.cohesion_peak_Pa - p.cohesion_residual_Pa) * decay;
+  const double psi = p.dilatancy_residual_rad + (peaks.dilatancy_rad - p.dilatancy_residual_rad) * decay;
+  return MohrCoulombStrength::of(phi, std::min(psi, phi), cohesion);
+}
+
+MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& state,
+                                                                    double mean_pressure_Pa) const {
+  const Peaks pk = peaks(state, mean_pressure_Pa);
+  const double decay = std::exp(-parameters_.softening_factor * state.plastic_deviatoric_strain);
+  const MohrCoulombStrength s = strength(pk, decay);
+  MohrCoulombParameters out;
+  out.elastic = parameters_.elastic;
+  out.friction_angle_rad = std::atan2(s.sin_phi, s.cos_phi);
+  out.dilatancy_angle_rad = std::asin(s.sin_psi);
+  out.cohesion_Pa = s.cohesion_Pa;
+  return out;
+}
+
+ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& strain_increment, State& state,
+                                                double dt_s) const {
+  if (dt_s > 0.0)
+    state.strain_rate_per_s =
+        parameters_.rate.smoothed_rate(state.strain_rate_per_s, deviatoric_strain(strain_increment) / dt_s);
+  const Peaks pk = peaks(state, mean_pressure(stress));
+  const double eta = parameters_.softening_factor;
+  const double decay_start = std::exp(-eta * state.plastic_deviatoric_strain);
+
+  const Voigt trial = stress + parameters_.elastic.stress_increment(strain_increment);
+  const PrincipalStresses principal(trial);
+  const Eigen::Vector3d& trial_values = principal.values();
+  if (!(strength(pk, decay_start).yield(trial_values) > 0.0)) {
+    stress = trial;
+    return ReturnRegion::elastic;
+  }
+
+  // g(Δκ): plastic deviatoric strain of the return with the strength at κ_n + Δκ.
+  // The plastic strain is coaxial with the trial: Δε^p = D⁻¹(σ_tr − σ), so its
+  // deviatoric norm is √(2/3) |dev(σ_tr − σ)| / 2G.
+  const double deviatoric_compliance = std::sqrt(2.0 / 3.0) / (2.0 * parameters_.elastic.shear_modulus());
+  Eigen::Vector3d returned;
+  ReturnRegion region = ReturnRegion::elastic;
+  auto plastic_strain = [&](double decay) {
+    returned = trial_values;
+    region = return_to_mohr_coulomb(returned, strength(pk, decay), stiffness_);
+    Eigen::Vector3d correction = trial_values - returned;
+    correction.array() -= correction.mean();
+    return deviatoric_compliance * correction.norm();
+  };
+  auto residual = [&](double increment) { return plastic_strain(decay_start * std::exp(-eta * increment)) - increment; };
+
+  double low = 0.0;
+  double residual_low = plastic_strain(decay_start);
+  double accepted = 0.0;
+  if (residual_low > 0.0) {
+    // Upper end: the return with the residual strength. Softening makes g grow
+    // with Δκ, so g(∞) usually bounds the root; widen if dilatancy decay says otherwise.
+    double high = plastic_strain(0.0);
+    double residual_high = residual(high);
+    for (int widen = 0; residual_high > 0.0 && widen < 60; ++widen) {
+      high = std::max(2.0 * high, high + residual_high);
+      residual_high = residual(high);
+    }
+    // Δκ to 1e-12 relative, but never finer than the rounding of g itself.
+    const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance *
+                            trial_values.cwiseAbs().maxCoeff();
+    const double tolerance = 1e-12 * high + rounding;
+    accepted = high;
+    double residual_accepted = residual_high;
+    // Illinois regula falsi: superlinear, never leaves the bracket.
+    for (int iteration = 0; iteration < 200 && std::abs(residual_accepted) > tolerance; ++iteration) {
+      const double next = high - residual_high * (high - low) / (residual_high - residual_low);
+      const double residual_next = residual(next);
+      if ((residual_next > 0.0) != (residual_high > 0.0)) {
+        low = high;
+        residual_low = residual_high;
+      } else {
+        residual_low *= 0.5;
+      }
+      high = next;
+      residual_high = residual_next;
+      accepted = next;
+      residual_accepted = residual_next;
+      if (std::abs(high - low) <= tolerance) break;
+    }
+  }
+  state.plastic_deviatoric_strain += accepted;
+  // `returned` and `region` are those of the last evaluation, at the accepted Δκ.
+  stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
+  return region;
+}
+
+void StrainSofteningMohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment,
+                                        std::span<State> state, double dt_s) const {
+  assert(stress.size() == strain_increment.size() && stress.size() == state.size());
+  for (std::size_t i = 0; i < stress.size(); ++i) update(stress[i], strain_increment[i], state[i], dt_s);
+}
+
+}  // namespace ffp

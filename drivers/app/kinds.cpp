@@ -7,7 +7,8 @@ namespace ffp {
 
 const std::vector<KindEntry>& registered_kinds() {
   static const std::vector<KindEntry> kinds = {
-
+      {"point", "single material point along a stress/strain path", &make_point_job},
+      {"integration_error", "error against run time of the constitutive integration", &make_integration_error_job},
   };
   return kinds;
 }

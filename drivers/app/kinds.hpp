@@ -5,5 +5,6 @@
 namespace ffp {
 
 std::unique_ptr<Job> make_point_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+std::unique_ptr<Job> make_integration_error_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 
 }  // namespace ffp

@@ -327,6 +327,26 @@ json parse_scene_text(const std::string& text, const std::string& source_name) {
     if (colon != std::string::npos) what = what.substr(colon + 2);
     throw SceneError(source_name + ":" + std::to_string(line) + ":" + std::to_string(column) +
                      ": invalid JSON: " + what);
+  } catch (const json::out_of_range& e) {
+    // A literal beyond double range (1e400): name it, where it is and its key.
+    const std::string what = e.what();
+    const auto open = what.find('\'');
+    const auto close = what.rfind('\'');
+    const std::string literal = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+    if (at == std::string::npos) throw SceneError(source_name + ": a number is out of range: " + what);
+    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    const std::size_t line_start = text.rfind('\n', at);
+    const std::size_t column = at - (line_start == std::string::npos ? 0 : line_start + 1) + 1;
+    std::string key = "a value";
+    const std::size_t colon = text.rfind(':', at);
+    if (colon != std::string::npos) {
+      const std::size_t key_end = text.rfind('"', colon);
+      const std::size_t key_start = key_end == std::string::npos ? std::string::npos : text.rfind('"', key_end - 1);
+      if (key_start != std::string::npos) key = text.substr(key_start + 1, key_end - key_start - 1);
+    }
+    throw SceneError(source_name + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + key + ": " +
+                     literal + " is beyond the range of a number (must be a finite number)");
   }
 }
 

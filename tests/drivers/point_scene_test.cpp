@@ -1,0 +1,117 @@
+/// The `point` scene kind end to end, through the ffp program.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+struct ScratchDirectory {
+  fs::path path;
+  ScratchDirectory() {
+    std::random_device seed;
+    path = fs::temp_directory_path() / ("ffp-point-" + std::to_string(seed()));
+    fs::create_directories(path);
+  }
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name) << text;
+    return path / name;
+  }
+};
+
+/// `ffp run scene --out out --quiet` inside the scratch directory; the exit code.
+int run_ffp(const ScratchDirectory& dir, const std::string& scene, const std::string& extra = "") {
+  const std::string command = "cd '" + dir.path.string() + "' && '" + FFP_BINARY + "' run '" + scene +
+                              "' --out out --quiet " + extra + " > log.txt 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return json::parse(in);
+}
+
+double n_phi(double phi_deg) {
+  const double s = std::sin(phi_deg * 3.14159265358979323846 / 180.0);
+  return (1 + s) / (1 - s);
+}
+
+}  // namespace
+
+TEST_CASE("point scene: drained triaxial peak equals σ3(Nφ−1) and the outputs are written", "[point][scene]") {
+  ScratchDirectory dir;
+  const std::string scene = std::string(FFP_SOURCE_DIR) + "/data/scenes/point_triaxial_mc.json";
+  REQUIRE(run_ffp(dir, scene) == 0);
+  const json summary = read_json(dir.path / "out" / "summary.json");
+  CHECK(summary["peak_q_kPa"].get<double>() == Approx(1.72 * (n_phi(39) - 1)).epsilon(1e-8));
+  CHECK(summary["steps"].get<long>() == 2000);
+  CHECK(summary["dissipated_work_J_m3"].get<double>() > 0.0);
+  CHECK(summary["scene"]["path"]["strain_rate_per_s"].get<double>() == 1e-4);  // defaults are echoed
+  CHECK(fs::exists(dir.path / "out" / "history.csv"));
+}
+
+TEST_CASE("point scene: a CSV table path gives the same peak as the named path", "[point][scene]") {
+  ScratchDirectory dir;
+  dir.write("path.csv",
+            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
+            "0,1.72,0,1.72,0,0,0\n"
+            "100,1.72,0.05,1.72,0,0,0\n");
+  const json scene = {{"kind", "point"},
+                      {"name", "table"},
+                      {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 50}}},
+                      {"initial_pressure_kPa", 1.72},
+                      {"path", {{"type", "general"}, {"table_csv", "path.csv"}, {"increments_per_row", 200}}}};
+  dir.write("scene.json", scene.dump());
+  REQUIRE(run_ffp(dir, "scene.json") == 0);
+  const json summary = read_json(dir.path / "out" / "summary.json");
+  CHECK(summary["peak_q_kPa"].get<double>() == Approx(1.72 * (n_phi(50) - 1)).epsilon(1e-8));
+  CHECK(summary["final_axial_strain"].get<double>() == Approx(0.05).epsilon(1e-14));
+}
+
+TEST_CASE("point scene: bad input names the key and exits with 2", "[point][scene]") {
+  ScratchDirectory dir;
+  const std::string scene = std::string(FFP_SOURCE_DIR) + "/data/scenes/point_triaxial_mc.json";
+  CHECK(run_ffp(dir, scene, "--set path.cell_presure_kPa=3") == 2);
+  std::ifstream log(dir.path / "log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  CHECK(text.find("path.cell_presure_kPa") != std::string::npos);
+  CHECK(run_ffp(dir, scene, "--set path.type=triaxial") == 2);
+  CHECK_FALSE(fs::exists(dir.path / "out"));
+}
+
+TEST_CASE("point scene: a failed step writes a scene that repeats it", "[point][scene]") {
+  ScratchDirectory dir;
+  // Axial stress beyond the strength under stress control: no stress state can follow.
+  const json scene = {
+      {"kind", "point"},
+      {"name", "too_strong"},
+      {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 39}}},
+      {"initial_pressure_kPa", 1.72},
+      {"newton", {{"max_iterations", 8}}},
+      {"path",
+       {{"type", "general"},
+        {"segments",
+         {{{"control", {"stress", "stress", "stress", "strain", "strain", "strain"}},
+           {"target", {1.72, 20, 1.72, 0, 0, 0}},
+           {"increments", 50}}}}}}};
+  dir.write("scene.json", scene.dump());
+  REQUIRE(run_ffp(dir, "scene.json") == 1);
+  REQUIRE(fs::exists(dir.path / "failed-step.json"));
+  const json reproducer = read_json(dir.path / "failed-step.json");
+  CHECK(reproducer["path"]["segments"][0]["increments"] == 1);
+  fs::rename(dir.path / "failed-step.json", dir.path / "repeat.json");
+  CHECK(run_ffp(dir, "repeat.json") == 1);  // the same step fails again on its own
+}

@@ -1,0 +1,246 @@
+#include <cmath>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "models/bolton_dilatancy.hpp"
+#include "models/friction_rate_law.hpp"
+#include "models/mohr_coulomb.hpp"
+#include "models/strain_softening_mohr_coulomb.hpp"
+#include "tensor_test_helpers.hpp"
+
+using namespace ffp;
+using namespace ffp::test;
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+/// The paper's sand (section 4.2, Table 1): E' = 2500 kPa, ν' = 0.33, φ'_p = 39°, φ'_c = 32°, ψ_p = 5°, η = 8.
+StrainSofteningParameters paper_sand() {
+  StrainSofteningParameters p;
+  p.elastic = {2.5e6, 0.33};
+  p.friction_peak_rad = 39 * kDeg;
+  p.friction_residual_rad = 32 * kDeg;
+  p.dilatancy_peak_rad = 5 * kDeg;
+  p.softening_factor = 8.0;
+  return p;
+}
+
+Voigt plastic_strain(const ElasticConstants& e, const Voigt& strain_increment, const Voigt& stress_increment) {
+  Voigt elastic = deviator(stress_increment) / (2.0 * e.shear_modulus());
+  for (int i = 0; i < 3; ++i) elastic[i] += trace(stress_increment) / (9.0 * e.bulk_modulus());
+  return strain_increment - elastic;
+}
+
+}  // namespace
+
+TEST_CASE("Bolton dilatancy index and peak dilatancy match table values, clamping included", "[bolton]") {
+  // Values computed by hand from paper eq. 5, I_R = D_r (10 − ln p') − 1, and eq. 4, tan ψ = 0.3 I_R.
+  struct Row {
+    double relative_density, p_kPa, index, psi_deg;
+  };
+  const Row table[] = {
+      {0.15, 1.72, 0.41865190, 7.15487},  // the paper's sand at σ3 = 1.72 kPa
+      {0.00, 1.72, 0.0, 0.0},             // D_r = 0: I_R = −1 clamped to 0
+      {0.15, 3.00, 0.33520817, 5.74470},
+      {0.50, 100.0, 1.69741490, 26.99},   // 0.5(10 − 4.60517) − 1
+      {1.00, 1.0, 4.0, 50.19443},         // 9 clamped to 4: tan ψ = 1.2
+      {0.10, 1e9, 0.0, 0.0},              // huge p': negative, clamped to 0
+      {0.15, 0.0, 4.0, 50.19443},         // no pressure: ln p' → −∞, clamped to 4
+  };
+  for (const Row& r : table) {
+    CAPTURE(r.relative_density, r.p_kPa);
+    CHECK(bolton_dilatancy_index(r.relative_density, r.p_kPa) == Approx(r.index).margin(1e-8));
+    CHECK(bolton_peak_dilatancy_rad(r.relative_density, r.p_kPa) / kDeg == Approx(r.psi_deg).margin(1e-2));
+  }
+}
+
+TEST_CASE("the rate law is monotone in ε̇ and inert below ε̇_ref", "[rate]") {
+  FrictionRateLaw law;
+  law.alpha_phi = 0.05;
+  law.reference_strain_rate_per_s = 1e-3;
+  law.max_friction_angle_rad = 60 * kDeg;
+  const double peak = 39 * kDeg;
+  CHECK(law.peak_friction_rad(peak, 0.0) == peak);
+  CHECK(law.peak_friction_rad(peak, 1e-9) == peak);
+  CHECK(law.peak_friction_rad(peak, 1e-3) == peak);
+  // φ'_p(ε̇) = φ'_p,ref (1 + α log10(ε̇/ε̇_ref)): two decades up → ×1.1.
+  CHECK(law.peak_friction_rad(peak, 1e-1) == Approx(peak * 1.1).epsilon(1e-14));
+  double previous = 0.0;
+  for (double rate = 1e-6; rate < 1e6; rate *= 1.7) {
+    const double phi = law.peak_friction_rad(peak, rate);
+    CHECK(phi >= previous);
+    CHECK(phi <= 60 * kDeg);
+    previous = phi;
+  }
+  CHECK(law.peak_friction_rad(peak, 1e30) == 60 * kDeg);  // capped
+  law.alpha_phi = 0.0;
+  CHECK(law.peak_friction_rad(peak, 1e6) == peak);  // α_φ = 0: rate independent
+}
+
+TEST_CASE("strain-rate smoothing is an N-increment exponential moving average", "[rate]") {
+  FrictionRateLaw law;
+  law.smoothing_increments = 1;
+  CHECK(law.smoothed_rate(5.0, 2.0) == 2.0);
+  law.smoothing_increments = 3;  // weight 2/(N+1) = 1/2
+  CHECK(law.smoothed_rate(4.0, 2.0) == 3.0);
+  double smoothed = 0.0;
+  for (int n = 0; n < 200; ++n) smoothed = law.smoothed_rate(smoothed, 7.0);
+  CHECK(smoothed == Approx(7.0).epsilon(1e-12));  // a steady rate is reproduced
+}
+
+TEST_CASE("SSMC strength decays as x_r + (x_p − x_r) exp(−η ε_d^p)", "[ssmc]") {
+  StrainSofteningParameters p = paper_sand();
+  p.cohesion_peak_Pa = 5e3;
+  p.cohesion_residual_Pa = 1e3;
+  const StrainSofteningMohrCoulomb law(p);
+  StrainSofteningMohrCoulomb::State state;
+  MohrCoulombParameters s = law.current_strength(state, 1.72e3);
+  CHECK(s.friction_angle_rad == Approx(39 * kDeg).epsilon(1e-14));
+  CHECK(s.dilatancy_angle_rad == Approx(5 * kDeg).epsilon(1e-13));
+  CHECK(s.cohesion_Pa == Approx(5e3).epsilon(1e-14));
+  state.plastic_deviatoric_strain = 1.0 / 8.0;
+  s = law.current_strength(state, 1.72e3);
+  CHECK(s.friction_angle_rad == Approx((32 + 7 * std::exp(-1.0)) * kDeg).epsilon(1e-13));
+  CHECK(s.cohesion_Pa == Approx(1e3 + 4e3 * std::exp(-1.0)).epsilon(1e-13));
+  CHECK(s.dilatancy_angle_rad == Approx(5 * std::exp(-1.0) * kDeg).epsilon(1e-12));
+  state.plastic_deviatoric_strain = 10.0;
+  s = law.current_strength(state, 1.72e3);
+  CHECK(s.friction_angle_rad == Approx(32 * kDeg).epsilon(1e-14));
+  CHECK(s.dilatancy_angle_rad == Approx(0.0).margin(1e-30));
+}
+
+TEST_CASE("Bolton's ψ_p is capped at the current friction angle", "[ssmc][bolton]") {
+  StrainSofteningParameters p = paper_sand();
+  p.relative_density = 1.0;  // I_R clamped to 4: ψ_p = 50.2° > φ
+  const StrainSofteningMohrCoulomb law(p);
+  StrainSofteningMohrCoulomb::State state;
+  CHECK(law.current_strength(state, 1e3).dilatancy_angle_rad == Approx(39 * kDeg).epsilon(1e-12));
+  // Early in softening ψ = 50.19° e^(−ηκ) still exceeds φ = 32° + 7° e^(−ηκ): capped.
+  state.plastic_deviatoric_strain = 0.01;
+  MohrCoulombParameters s = law.current_strength(state, 1e3);
+  CHECK(s.dilatancy_angle_rad == Approx(s.friction_angle_rad).epsilon(1e-12));
+  // Later it decays below φ and follows its own law.
+  state.plastic_deviatoric_strain = 0.1;
+  s = law.current_strength(state, 1e3);
+  const double bolton_peak = std::atan(1.2);
+  CHECK(s.dilatancy_angle_rad == Approx(bolton_peak * std::exp(-0.8)).epsilon(1e-12));
+  CHECK(s.dilatancy_angle_rad < s.friction_angle_rad);
+}
+
+TEST_CASE("SSMC with η = 0 is Mohr-Coulomb with the peak strength", "[ssmc]") {
+  StrainSofteningParameters p = paper_sand();
+  p.softening_factor = 0.0;
+  const StrainSofteningMohrCoulomb ssmc(p);
+  MohrCoulombParameters m;
+  m.elastic = p.elastic;
+  m.friction_angle_rad = p.friction_peak_rad;
+  m.dilatancy_angle_rad = p.dilatancy_peak_rad;
+  const MohrCoulomb mc(m);
+  std::mt19937_64 rng(8);
+  Voigt a = isotropic(-2e3), b = a;
+  StrainSofteningMohrCoulomb::State state;
+  for (int n = 0; n < 500; ++n) {
+    const Voigt increment = random_voigt(rng, 3e-4) + isotropic(-1e-4);
+    ssmc.update(a, increment, state, 0.0);
+    mc.update(b, increment);
+    // Same closed-form return on the same numbers: equal to rounding.
+    REQUIRE(max_abs(a - b) <= 1e-12 * std::max(max_abs(b), 1.0));
+  }
+  CHECK(state.plastic_deviatoric_strain > 0.0);
+}
+
+TEST_CASE("SSMC hardening is implicit: Δκ is the plastic deviatoric strain of the increment", "[ssmc]") {
+  for (double eta : {0.5, 8.0, 200.0}) {
+    StrainSofteningParameters p = paper_sand();
+    p.softening_factor = eta;
+    p.relative_density = 0.15;
+    const StrainSofteningMohrCoulomb law(p);
+    std::mt19937_64 rng(9);
+    Voigt stress = isotropic(-1.72e3);
+    StrainSofteningMohrCoulomb::State state;
+    int plastic = 0;
+    for (int n = 0; n < 400; ++n) {
+      // Isochoric axial compression with random disturbances: keeps yielding.
+      Voigt increment = random_voigt(rng, 5e-4);
+      increment[0] += 1.5e-3;
+      increment[1] -= 3e-3;
+      increment[2] += 1.5e-3;
+      const Voigt start = stress;
+      const double kappa_start = state.plastic_deviatoric_strain;
+      const ReturnRegion region = law.update(stress, increment, state, 0.0);
+      REQUIRE(stress.allFinite());
+      const double dkappa = state.plastic_deviatoric_strain - kappa_start;
+      CHECK(dkappa >= 0.0);
+      const Voigt ep = plastic_strain(p.elastic, increment, stress - start);
+      // Δκ is solved to 1e-12 relative; Δε − CΔσ cancels O(1e-3) strains to ~1e-16.
+      CHECK(dkappa == Approx(deviatoric_strain(ep)).epsilon(1e-9).margin(1e-14));
+      if (region != ReturnRegion::elastic) {
+        ++plastic;
+        const MohrCoulomb at_end(law.current_strength(state, -trace(start) / 3.0));
+        const double scale = max_abs(start + p.elastic.stress_increment(increment));
+        CHECK(std::abs(at_end.yield_function(stress)) <= 1e-10 * scale);
+      }
+    }
+    CHECK(plastic > 100);
+  }
+}
+
+TEST_CASE("a faster strain rate raises SSMC strength only above ε̇_ref", "[ssmc][rate]") {
+  StrainSofteningParameters p = paper_sand();
+  p.rate.alpha_phi = 0.1;
+  p.rate.reference_strain_rate_per_s = 1.0;
+  const StrainSofteningMohrCoulomb law(p);
+  auto peak_q = [&](double dt) {
+    Voigt stress = isotropic(-1.72e3);
+    StrainSofteningMohrCoulomb::State state;
+    Voigt increment = Voigt::Zero();
+    increment << 0.5e-4, -1e-4, 0.5e-4, 0, 0, 0;  // isochoric axial compression
+    double peak = 0.0;
+    for (int n = 0; n < 200; ++n) {
+      law.update(stress, increment, state, dt);
+      peak = std::max(peak, deviatoric_stress(stress));
+    }
+    return peak;
+  };
+  // ε̇ = 1e-4/dt: dt = 1 s and 1e-3 s lie below / at ε̇_ref; 1e-6 s is two decades above it.
+  const double slow = peak_q(1.0), at_reference = peak_q(1e-4), fast = peak_q(1e-6), faster = peak_q(1e-8);
+  CHECK(slow == at_reference);
+  CHECK(fast > slow * 1.1);
+  CHECK(faster > fast);
+}
+
+TEST_CASE("SSMC randomized sweep stays finite and admissible", "[ssmc][sweep]") {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  long violations = 0, not_finite = 0;
+  for (int n = 0; n < 20000; ++n) {
+    StrainSofteningParameters p = paper_sand();
+    p.friction_peak_rad = (1.0 + 69.0 * uniform(rng)) * kDeg;
+    p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
+    p.dilatancy_peak_rad = n % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
+    p.cohesion_peak_Pa = n % 2 == 0 ? 0.0 : 5e3 * uniform(rng);
+    p.cohesion_residual_Pa = p.cohesion_peak_Pa * uniform(rng);
+    p.softening_factor = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
+    p.elastic.poisson_ratio = 0.49 * uniform(rng);
+    if (n % 5 == 0) p.relative_density = uniform(rng);
+    if (n % 3 == 0) p.rate.alpha_phi = 0.2 * uniform(rng);
+    const StrainSofteningMohrCoulomb law(p);
+    StrainSofteningMohrCoulomb::State state;
+    state.plastic_deviatoric_strain = n % 7 == 0 ? 0.0 : uniform(rng);
+    Voigt stress = n % 6 == 0 ? Voigt(Voigt::Zero()) : Voigt(isotropic(-1e4 * uniform(rng)) + random_voigt(rng, 3e3));
+    const Voigt increment = random_voigt(rng, 0.1 * uniform(rng));
+    const Voigt start = stress;
+    law.update(stress, increment, state, 1e-3);
+    if (!stress.allFinite() || !std::isfinite(state.plastic_deviatoric_strain)) {
+      ++not_finite;
+      continue;
+    }
+    const MohrCoulomb at_end(law.current_strength(state, -trace(start) / 3.0));
+    const double scale = std::max(max_abs(start + p.elastic.stress_increment(increment)), p.cohesion_peak_Pa);
+    if (at_end.yield_function(stress) > 1e-10 * scale) ++violations;
+  }
+  CHECK(not_finite == 0);
+  CHECK(violations == 0);
+}
