@@ -6,7 +6,7 @@ namespace ffp {
 
 std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   std::vector<Study> studies;
-  (void)scenes_dir;
+  studies.push_back(integration_error_study(scenes_dir));
   return studies;
 }
 

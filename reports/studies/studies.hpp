@@ -6,4 +6,6 @@
 
 namespace ffp {
 
+Study integration_error_study(const std::filesystem::path& scenes_dir);
+
 }  // namespace ffp

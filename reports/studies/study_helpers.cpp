@@ -1,0 +1,34 @@
+#include "reports/studies/study_helpers.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+bool include_run_figure(const StudyResults& results, std::size_t run, const std::string& relative_png,
+                        const std::string& name, const std::string& caption, StudyOutput& out) {
+  const fs::path source = results.file(run, relative_png);
+  if (!results.ok(run) || !fs::exists(source)) {
+    out.document.paragraph("*(Figure missing: " + caption + " — the run failed or gnuplot was not available.)*");
+    return false;
+  }
+  fs::copy_file(source, out.figures_dir / name, fs::copy_options::overwrite_existing);
+  out.document.figure(out.figures_relative + "/" + name, caption);
+  return true;
+}
+
+std::string scientific(double value, int digits) {
+  if (!std::isfinite(value)) return "–";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, value);
+  return buffer;
+}
+
+RunRequest scene_run(const fs::path& scenes_dir, const std::string& scene_file, const std::string& label,
+                     std::vector<std::string> overrides) {
+  return RunRequest{label, scenes_dir / scene_file, std::move(overrides)};
+}
+
+}  // namespace ffp

@@ -1,0 +1,22 @@
+#pragma once
+/// Small helpers the study writers share.
+#include <filesystem>
+#include <string>
+
+#include "reports/study.hpp"
+
+namespace ffp {
+
+/// Copy a run's PNG into the report's figures folder under `name` and add it
+/// to the document. Returns false (and says so in the text) when it is missing.
+bool include_run_figure(const StudyResults& results, std::size_t run, const std::string& relative_png,
+                        const std::string& name, const std::string& caption, StudyOutput& out);
+
+/// Scientific notation for error tables, e.g. "2.3e-05".
+std::string scientific(double value, int digits = 2);
+
+/// Request for a scene in the scenes folder, with overrides.
+RunRequest scene_run(const std::filesystem::path& scenes_dir, const std::string& scene_file, const std::string& label,
+                     std::vector<std::string> overrides = {});
+
+}  // namespace ffp
