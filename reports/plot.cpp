@@ -119,7 +119,8 @@ bool render(const std::string& body, const fs::path& png, int width, int height)
     std::ofstream script(script_file);
     script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
     script << "set output " << quoted(temporary_png.string()) << "\n";
-    script << "set grid\nset encoding utf8\n" << body << "unset output\n";
+    // Plain text: '_' in scene names must not turn into subscripts.
+    script << "set termoption noenhanced\nset grid\nset encoding utf8\n" << body << "unset output\n";
   }
   const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
   std::string log;

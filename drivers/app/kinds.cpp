@@ -8,7 +8,10 @@ namespace ffp {
 const std::vector<KindEntry>& registered_kinds() {
   static const std::vector<KindEntry> kinds = {
       {"point", "single material point along a stress/strain path", &make_point_job},
+      {"mpm", "axisymmetric MPM verification run (bodies, boundaries, gravity)", &make_mpm_job},
       {"integration_error", "error against run time of the constitutive integration", &make_integration_error_job},
+      {"triaxial", "drained triaxial element test: q, ε_v and force–displacement (dissipated work)", &make_triaxial_job},
+      {"calibration", "fit of the SSMC softening factor η to a lab triaxial curve (dissipated work)", &make_calibration_job},
   };
   return kinds;
 }

@@ -1,10 +1,11 @@
 /// `ffp run` and `ffp check`.
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <regex>
 #include <thread>
 
 #include "drivers/app/commands.hpp"
@@ -71,8 +72,10 @@ LoadedScene load(const SceneArguments& a) {
   loaded.scene_dir = fs::path(a.scene_file).parent_path();
   loaded.job = make_job(scene, loaded.scene_dir, loaded.echo);
   const std::string name = loaded.echo.value("name", "");
-  static const std::regex safe("[A-Za-z0-9][A-Za-z0-9_.-]{0,99}");
-  if (!std::regex_match(name, safe))
+  const auto allowed = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'; };
+  const bool safe = !name.empty() && name.size() <= 100 && std::isalnum(static_cast<unsigned char>(name[0])) &&
+                    std::all_of(name.begin(), name.end(), allowed);
+  if (!safe)
     throw SceneError("name: '" + name + "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
   return loaded;
 }

@@ -38,7 +38,7 @@ TEST_CASE("a good scene writes summary.json with the scene and its defaults", "[
   for (const auto& name : scratch.entries()) CHECK((name == "result" || name == "scene.json"));
 }
 
-TEST_CASE("--set overrides a key and the summary echoes the override", "[cli]") {
+TEST_CASE("a set override changes a key and the summary echoes it", "[cli]") {
   Scratch scratch;
   const auto file = scratch.write_json("scene.json", good_point_scene());
   const auto r = run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"},
@@ -88,7 +88,7 @@ TEST_CASE("SIGTERM during a run leaves no result directory", "[cli]") {
   for (const auto& name : scratch.entries()) CHECK(name == "scene.json");
 }
 
-TEST_CASE("--version and --help answer and succeed", "[cli]") {
+TEST_CASE("version and help answer and succeed", "[cli]") {
   Scratch scratch;
   const auto v = run_ffp({"--version"}, scratch.path());
   CHECK(v.exit_code == 0);

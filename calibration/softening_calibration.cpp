@@ -1,0 +1,297 @@
+#include "calibration/softening_calibration.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include <ceres/ceres.h>
+
+namespace ffp {
+
+std::string to_string(CalibrationMode mode) {
+  return mode == CalibrationMode::dissipated_work ? "dissipated_work" : "curve_least_squares";
+}
+
+double dissipated_work_J(const std::vector<double>& axial_strain, const std::vector<double>& deviatoric_stress_Pa,
+                         const TriaxialSpecimen& specimen, double from, double to) {
+  // ∫ F dδ with F = qA, δ = ε_a H: the same trapezoid as on the F–δ points, scaled by V = AH.
+  return specimen.volume_m3() * area_under(axial_strain, deviatoric_stress_Pa, from, to);
+}
+
+double peak_friction_from_peak_q(double peak_q_Pa, double cell_pressure_Pa) {
+  if (!(peak_q_Pa > 0.0 && cell_pressure_Pa > 0.0))
+    throw std::invalid_argument("peak_friction_from_peak_q: needs q_peak > 0 and σ3 > 0");
+  // σ1/σ3 = N at the peak with c' = 0: q = σ3 (N − 1), sin φ = (N − 1)/(N + 1).
+  const double n = 1.0 + peak_q_Pa / cell_pressure_Pa;
+  return std::asin((n - 1.0) / (n + 1.0));
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string format(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+/// Residuals of one scalar parameter x = ln η, with a central-difference
+/// Jacobian of fixed absolute step in x (Ceres' own numeric differences scale
+/// the step with |x|, which vanishes at η = 1). The last point evaluated is
+/// cached: Ceres asks again for the Jacobian at a step it has just accepted.
+class LogEtaCost final : public ceres::CostFunction {
+ public:
+  using Residuals = std::function<bool(double x, double* residuals)>;
+
+  LogEtaCost(int residual_count, Residuals residuals)
+      : residuals_(std::move(residuals)), cache_(static_cast<std::size_t>(residual_count)) {
+    set_num_residuals(residual_count);
+    mutable_parameter_block_sizes()->push_back(1);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const double x = parameters[0][0];
+    if (!(has_cache_ && x == cached_x_)) {
+      if (!residuals_(x, cache_.data())) return false;
+      cached_x_ = x;
+      has_cache_ = true;
+    }
+    std::copy(cache_.begin(), cache_.end(), residuals);
+    if (jacobians != nullptr && jacobians[0] != nullptr) {
+      std::vector<double> plus(cache_.size()), minus(cache_.size());
+      if (!residuals_(x + kStep, plus.data()) || !residuals_(x - kStep, minus.data())) return false;
+      for (std::size_t i = 0; i < cache_.size(); ++i) jacobians[0][i] = (plus[i] - minus[i]) / (2.0 * kStep);
+    }
+    return true;
+  }
+
+ private:
+  // 1e-4 in ln η: truncation error ~1e-8 relative, while W's rounding (Newton
+  // stops at 1e-10 of the stress) perturbs the slope by ~1e-6 at most.
+  static constexpr double kStep = 1e-4;
+  Residuals residuals_;
+  mutable std::vector<double> cache_;
+  mutable double cached_x_ = 0.0;
+  mutable bool has_cache_ = false;
+};
+
+/// Stops Ceres after the iteration in which the numerical triaxial threw.
+class AbortOnPendingException final : public ceres::IterationCallback {
+ public:
+  explicit AbortOnPendingException(const std::exception_ptr& pending) : pending_(pending) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return pending_ ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::exception_ptr& pending_;
+};
+
+class Calibration {
+ public:
+  Calibration(const LabCurve& lab, const NumericalTriaxial& triaxial, const CalibrationSettings& settings)
+      : lab_(lab), triaxial_(triaxial), settings_(settings) {
+    from_ = lab.axial_strain.front();
+    to_ = lab.axial_strain.back();
+    work_lab_ = dissipated_work_J(lab.axial_strain, lab.deviatoric_stress_Pa, settings.specimen, from_, to_);
+    q_scale_ = lab.peak_q_Pa();
+  }
+
+  CalibrationResult run() {
+    const auto start = Clock::now();
+    CalibrationResult result;
+    result.mode = settings_.mode;
+    result.dissipated_work_lab_J = work_lab_;
+    result.displacement_range_m[0] = from_ * settings_.specimen.height_m;
+    result.displacement_range_m[1] = to_ * settings_.specimen.height_m;
+    if (!(work_lab_ > 0.0))
+      throw CalibrationFailure(lab_.source + ": the lab curve's dissipated work is " + format(work_lab_) +
+                               " J; it must be > 0 to be matched");
+
+    scan(result);
+    // The bracket check runs whatever the start: it is what says W_lab can be matched at all.
+    const double x_scan = settings_.mode == CalibrationMode::dissipated_work ? work_start(result) : curve_start(result);
+    const double x_start = settings_.eta_start ? std::log(*settings_.eta_start) : x_scan;
+
+    const int residual_count =
+        settings_.mode == CalibrationMode::dissipated_work ? 1 : static_cast<int>(lab_.axial_strain.size());
+    auto residuals = [this](double x, double* r) {
+      try {
+        const SpecimenCurve curve = evaluate(std::exp(x));
+        if (settings_.mode == CalibrationMode::dissipated_work) {
+          r[0] = (work_of(curve) - work_lab_) / work_lab_;
+        } else {
+          curve_residuals(curve, r);
+        }
+        return true;
+      } catch (const PointIntegrationFailure&) {
+        // A trial η the element test cannot integrate: Ceres rejects the step and shrinks the region.
+        return false;
+      } catch (...) {
+        // Anything else (bad configuration, an interrupt) ends the fit and is rethrown after it.
+        if (!pending_) pending_ = std::current_exception();
+        return false;
+      }
+    };
+
+    double x = x_start;
+    ceres::Problem problem;
+    problem.AddResidualBlock(new LogEtaCost(residual_count, residuals), nullptr, &x);
+    problem.SetParameterLowerBound(&x, 0, std::log(settings_.eta_min));
+    problem.SetParameterUpperBound(&x, 0, std::log(settings_.eta_max));
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.logging_type = ceres::SILENT;
+    options.minimizer_progress_to_stdout = false;
+    options.max_num_iterations = settings_.max_iterations;
+    options.num_threads = 1;
+    // η to 1e-8 relative: far below what the element test resolves (W to ~1e-5 at
+    // 1000 increments). The curve criterion is a large-residual problem on which
+    // Gauss-Newton converges only linearly (~×0.3 per step) until the cost's
+    // relative changes reach the model's rounding (~1e-11: Newton stops at 1e-10
+    // of the stress); the function tolerance stops it there instead of letting it
+    // shrink the trust region on noise.
+    options.parameter_tolerance = 1e-8;
+    options.function_tolerance = 1e-10;
+    options.gradient_tolerance = 1e-16;
+    AbortOnPendingException abort(pending_);
+    options.callbacks.push_back(&abort);
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    if (pending_) std::rethrow_exception(pending_);
+
+    result.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+    result.termination = ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
+    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    if (summary.termination_type == ceres::FAILURE || !std::isfinite(x))
+      throw CalibrationFailure("the fit of η failed: " + result.termination);
+
+    result.eta = std::exp(x);
+    result.at_bound = std::abs(x - std::log(settings_.eta_min)) < 1e-6 || std::abs(x - std::log(settings_.eta_max)) < 1e-6;
+    result.fitted = evaluate(result.eta);
+    result.dissipated_work_model_J = work_of(result.fitted);
+    result.relative_work_residual = (result.dissipated_work_model_J - work_lab_) / work_lab_;
+    result.plastic_work_model_J = result.fitted.plastic_work_J;
+    std::vector<double> r(lab_.axial_strain.size());
+    curve_residuals(result.fitted, r.data());
+    double squares = 0.0;
+    for (double v : r) squares += v * v;
+    result.rms_q_error_Pa = q_scale_ * std::sqrt(squares / static_cast<double>(r.size()));
+    result.model_runs = runs_;
+    result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+  }
+
+ private:
+  SpecimenCurve evaluate(double eta) {
+    ++runs_;
+    SpecimenCurve curve = triaxial_(eta);
+    const std::size_t n = curve.axial_strain.size();
+    if (n < 2 || curve.deviatoric_stress_Pa.size() != n)
+      throw CalibrationFailure("the numerical triaxial returned " + std::to_string(n) +
+                               " points (needs ≥ 2, with as many stresses as strains)");
+    const double slack = 1e-12 * std::max(1.0, to_);
+    if (curve.axial_strain.front() > from_ + slack || curve.axial_strain.back() < to_ - slack)
+      throw CalibrationFailure("the numerical triaxial covers ε_a ∈ [" + format(curve.axial_strain.front()) + ", " +
+                               format(curve.axial_strain.back()) + "], not the lab's [" + format(from_) + ", " +
+                               format(to_) + "]: run it to the lab's last strain");
+    return curve;
+  }
+
+  double work_of(const SpecimenCurve& curve) const {
+    return dissipated_work_J(curve.axial_strain, curve.deviatoric_stress_Pa, settings_.specimen, from_, to_);
+  }
+
+  void curve_residuals(const SpecimenCurve& curve, double* r) const {
+    for (std::size_t i = 0; i < lab_.axial_strain.size(); ++i) {
+      const double eps = std::clamp(lab_.axial_strain[i], curve.axial_strain.front(), curve.axial_strain.back());
+      r[i] = (interpolate_linear(curve.axial_strain, curve.deviatoric_stress_Pa, eps) - lab_.deviatoric_stress_Pa[i]) /
+             q_scale_;
+    }
+  }
+
+  void scan(CalibrationResult& result) {
+    const int n = settings_.scan_points;
+    const double lo = std::log(settings_.eta_min), hi = std::log(settings_.eta_max);
+    std::vector<double> r(lab_.axial_strain.size());
+    for (int k = 0; k < n; ++k) {
+      WorkSample s;
+      s.eta = std::exp(lo + (hi - lo) * k / (n - 1));
+      if (k == n - 1) s.eta = settings_.eta_max;  // exactly the bound, not its rounded exp(log)
+      if (k == 0) s.eta = settings_.eta_min;
+      const SpecimenCurve curve = evaluate(s.eta);
+      s.work_J = work_of(curve);
+      curve_residuals(curve, r.data());
+      for (double v : r) s.sum_of_squares += v * v;
+      result.scan.push_back(s);
+    }
+    result.work_decreases_with_eta = true;
+    for (std::size_t k = 1; k < result.scan.size(); ++k)
+      if (!(result.scan[k].work_J < result.scan[k - 1].work_J)) result.work_decreases_with_eta = false;
+  }
+
+  /// ln η where the scan's W crosses W_lab (log-linear between the bracketing samples).
+  double work_start(const CalibrationResult& result) const {
+    const WorkSample& slowest = result.scan.front();
+    const WorkSample& fastest = result.scan.back();
+    const std::string bounds = "η ∈ [" + format(settings_.eta_min) + ", " + format(settings_.eta_max) + "]";
+    if (work_lab_ > std::max(slowest.work_J, fastest.work_J))
+      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) + " J, more than the model with " +
+                               "the slowest softening, W(η = " + format(slowest.eta) + ") = " + format(slowest.work_J) +
+                               " J: no " + bounds + " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
+    if (work_lab_ < std::min(slowest.work_J, fastest.work_J))
+      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) + " J, less than the model with " +
+                               "the fastest softening, W(η = " + format(fastest.eta) + ") = " + format(fastest.work_J) +
+                               " J: no " + bounds + " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
+    for (std::size_t k = 1; k < result.scan.size(); ++k) {
+      const WorkSample& a = result.scan[k - 1];
+      const WorkSample& b = result.scan[k];
+      if ((a.work_J - work_lab_) * (b.work_J - work_lab_) <= 0.0) {
+        const double w = a.work_J == b.work_J ? 0.5 : (work_lab_ - a.work_J) / (b.work_J - a.work_J);
+        return std::log(a.eta) + w * (std::log(b.eta) - std::log(a.eta));
+      }
+    }
+    return std::log(slowest.eta);  // unreachable: the ends bracket W_lab
+  }
+
+  double curve_start(const CalibrationResult& result) const {
+    const auto best = std::min_element(result.scan.begin(), result.scan.end(),
+                                       [](const WorkSample& a, const WorkSample& b) {
+                                         return a.sum_of_squares < b.sum_of_squares;
+                                       });
+    return std::log(best->eta);
+  }
+
+  const LabCurve& lab_;
+  const NumericalTriaxial& triaxial_;
+  const CalibrationSettings& settings_;
+  double from_ = 0.0, to_ = 0.0;
+  double work_lab_ = 0.0;
+  double q_scale_ = 1.0;
+  int runs_ = 0;
+  std::exception_ptr pending_;
+};
+
+}  // namespace
+
+CalibrationResult calibrate_softening_factor(const LabCurve& lab, const NumericalTriaxial& triaxial,
+                                             const CalibrationSettings& settings) {
+  if (!(settings.eta_min > 0.0 && settings.eta_max > settings.eta_min))
+    throw std::invalid_argument("calibrate_softening_factor: needs 0 < eta_min < eta_max");
+  if (settings.scan_points < 2) throw std::invalid_argument("calibrate_softening_factor: scan_points must be ≥ 2");
+  if (settings.max_iterations < 1) throw std::invalid_argument("calibrate_softening_factor: max_iterations must be ≥ 1");
+  if (!triaxial) throw std::invalid_argument("calibrate_softening_factor: no numerical triaxial");
+  if (settings.eta_start && !(*settings.eta_start >= settings.eta_min && *settings.eta_start <= settings.eta_max))
+    throw std::invalid_argument("calibrate_softening_factor: eta_start must lie in [eta_min, eta_max]");
+  check_lab_curve(lab);
+  return Calibration(lab, triaxial, settings).run();
+}
+
+}  // namespace ffp

@@ -1,0 +1,99 @@
+#pragma once
+/// Calibration of the SSMC softening factor η on a lab triaxial curve (paper
+/// section 4.2, Fig. 3). Pure numerics: nothing here prints or reads files.
+///
+/// Two criteria, one parameter, both solved by Ceres on x = ln η with the box
+/// ln η_min ≤ x ≤ ln η_max (central numeric differences of the numerical
+/// triaxial):
+///
+/// - dissipated_work (the paper's): the smeared-crack idea (Rots et al. 1985) —
+///   the area under the axial force–displacement curve of the numerical
+///   specimen equals the lab's, over the lab's displacement range:
+///     r(x) = (W_model(e^x) − W_lab) / W_lab,  W = ∫ F dδ = V ∫ q dε_a,
+///   each curve integrated by the trapezoid rule on its own points
+///   (drivers/triaxial_test.hpp: area_under), F = q·A and δ = ε_a·H with the
+///   same specimen for both. Before the fit, W is evaluated on a log-spaced
+///   scan of η over the bounds: it must decrease with η (more softening, less
+///   area), and W_lab must lie in [W(η_max), W(η_min)], else the curve cannot
+///   be matched inside the bounds (CalibrationFailure).
+/// - curve_least_squares (for comparison): r_i = (q_model(ε_i) − q_lab(ε_i)) /
+///   q_peak,lab at every lab strain ε_i, the model curve interpolated linearly.
+///
+/// W_lab and W_model are both ∫F dδ, the piston's deviatoric work. What the
+/// law dissipates (plastic work) differs from it by the elastic energy still
+/// stored and by the cell pressure's work on the specimen's volume change
+/// (drivers/triaxial_test.hpp); the result reports the model's plastic work
+/// beside W for comparison.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "calibration/lab_curve.hpp"
+#include "calibration/numerical_triaxial.hpp"
+#include "drivers/triaxial_test.hpp"
+
+namespace ffp {
+
+enum class CalibrationMode { dissipated_work, curve_least_squares };
+std::string to_string(CalibrationMode mode);
+
+struct CalibrationSettings {
+  CalibrationMode mode = CalibrationMode::dissipated_work;
+  double eta_min = 0.1;
+  double eta_max = 500.0;
+  /// Where Ceres starts. Unset: from the scan — where its W crosses W_lab
+  /// (log-linear), or its point of least squares for the curve criterion.
+  std::optional<double> eta_start;
+  int scan_points = 9;        ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
+  int max_iterations = 50;    ///< Ceres iterations
+  TriaxialSpecimen specimen;  ///< turns q–ε_a into F–δ, the same for the lab and the model
+};
+
+struct WorkSample {
+  double eta = 0.0;
+  double work_J = 0.0;         ///< W_model(η) over the lab's range
+  double sum_of_squares = 0.0; ///< Σ r_i² of the curve criterion at this η
+};
+
+struct CalibrationResult {
+  CalibrationMode mode = CalibrationMode::dissipated_work;
+  double eta = 0.0;
+  double dissipated_work_lab_J = 0.0;
+  double dissipated_work_model_J = 0.0;     ///< at the fitted η, over the lab's range
+  double relative_work_residual = 0.0;      ///< (W_model − W_lab) / W_lab at the fitted η
+  double plastic_work_model_J = 0.0;        ///< the law's V Σ σ:Δε^p at the fitted η (NaN if unknown)
+  double rms_q_error_Pa = 0.0;              ///< model against lab at the lab's strains
+  double displacement_range_m[2] = {0.0, 0.0};  ///< the lab's δ range both works cover
+  int iterations = 0;                       ///< Ceres iterations (successful + unsuccessful steps)
+  int model_runs = 0;                       ///< numerical triaxials run, scan and derivatives included
+  std::string termination;                  ///< Ceres' termination type and message
+  bool converged = false;                   ///< Ceres reported CONVERGENCE
+  bool at_bound = false;                    ///< η within 1e-6 (relative) of η_min or η_max
+  double wall_time_s = 0.0;                 ///< the whole calibration, scan included
+  std::vector<WorkSample> scan;             ///< W(η) on the log-spaced scan
+  bool work_decreases_with_eta = false;     ///< W strictly decreasing along the scan
+  SpecimenCurve fitted;                     ///< the response at the fitted η
+};
+
+/// The calibration cannot be done as asked (W_lab outside the bounds' range, the
+/// numerical triaxial failing, a response too short for the lab's range, ...).
+class CalibrationFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// `lab` must pass check_lab_curve. Throws CalibrationFailure, or
+/// std::invalid_argument for settings out of range.
+CalibrationResult calibrate_softening_factor(const LabCurve& lab, const NumericalTriaxial& triaxial,
+                                             const CalibrationSettings& settings);
+
+/// W = ∫ F dδ = A·H ∫ q dε_a over ε_a ∈ [from, to], trapezoid on the given points.
+double dissipated_work_J(const std::vector<double>& axial_strain, const std::vector<double>& deviatoric_stress_Pa,
+                         const TriaxialSpecimen& specimen, double from, double to);
+
+/// φ'_p implied by a peak q at cell pressure σ3 with c' = 0:
+/// N = 1 + q_peak/σ3, sin φ'_p = (N − 1)/(N + 1) (the Mohr-Coulomb triaxial-compression peak).
+double peak_friction_from_peak_q(double peak_q_Pa, double cell_pressure_Pa);
+
+}  // namespace ffp
