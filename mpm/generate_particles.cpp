@@ -1,0 +1,58 @@
+#include "mpm/generate_particles.hpp"
+
+#include <stdexcept>
+
+#include "mpm/initial_stress.hpp"
+
+namespace ffp::mpm {
+
+namespace {
+
+bool inside(const Region& region, double r, double z) {
+  if (const auto* box = std::get_if<BoxRegion>(&region))
+    return r >= box->r_min_m && r <= box->r_max_m && z >= box->z_min_m && z <= box->z_max_m;
+  const auto& sphere = std::get<SphereRegion>(region);
+  const double dz = z - sphere.center_z_m;
+  return r * r + dz * dz <= sphere.radius_m * sphere.radius_m;
+}
+
+}  // namespace
+
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
+                           double gravity_m_s2, Particles& particles) {
+  if (body.particles_per_cell_r < 1 || body.particles_per_cell_z < 1)
+    throw std::invalid_argument("body " + body.name + ": particles per cell must be ≥ 1");
+  if (!(body.density_kg_m3 > 0.0)) throw std::invalid_argument("body " + body.name + ": density must be > 0");
+  const int nr = body.particles_per_cell_r, nz = body.particles_per_cell_z;
+  const int cells_r = grid.r.cells(), cells_z = grid.z.cells();
+  const bool r_outer = cells_r >= cells_z;  // same rule as ParticleBins::configure
+  const double unit_weight = body.density_kg_m3 * gravity_m_s2;
+  const int outer_count = r_outer ? cells_r : cells_z, inner_count = r_outer ? cells_z : cells_r;
+  for (int outer = 0; outer < outer_count; ++outer) {
+    for (int inner = 0; inner < inner_count; ++inner) {
+      const int i = r_outer ? outer : inner, j = r_outer ? inner : outer;
+      const double hr = grid.r.spacing(i) / nr, hz = grid.z.spacing(j) / nz;
+      for (int a = 0; a < nr; ++a) {
+        for (int b = 0; b < nz; ++b) {
+          const double r = grid.r.coordinate(i) + (a + 0.5) * hr;
+          const double z = grid.z.coordinate(j) + (b + 0.5) * hz;
+          if (!inside(body.region, r, z)) continue;
+          const std::size_t p = particles.size();
+          particles.resize(p + 1);
+          particles.body[p] = body_index;
+          particles.r[p] = particles.r0[p] = r;
+          particles.z[p] = particles.z0[p] = z;
+          particles.vr[p] = body.initial_velocity_r_m_s;
+          particles.vz[p] = body.initial_velocity_z_m_s;
+          particles.volume[p] = r * hr * hz;
+          particles.mass[p] = body.density_kg_m3 * particles.volume[p];
+          particles.half_r[p] = 0.5 * hr;
+          particles.half_z[p] = 0.5 * hz;
+          if (body.initial_stress) particles.stress[p] = geostatic_stress(*body.initial_stress, unit_weight, z);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace ffp::mpm

@@ -1,0 +1,20 @@
+#pragma once
+/// Filling a body's region with particles on a regular sub-lattice of the grid cells.
+#include <cstdint>
+
+#include "mpm/grid.hpp"
+#include "mpm/model.hpp"
+#include "mpm/particles.hpp"
+
+namespace ffp::mpm {
+
+/// Appends the body's particles: n_r × n_z per cell at the sub-cell centres
+/// that lie inside the region; A_p is the sub-cell area, V_p = r_p·A_p,
+/// m_p = ρ·V_p, GIMP half-lengths half the sub-cell sides. Cells are visited
+/// along the longer grid direction first, so that the particles of one
+/// ParticleBins strip sit together in memory. Sets the K0 stress when asked
+/// (unit weight ρ·g).
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
+                           double gravity_m_s2, Particles& particles);
+
+}  // namespace ffp::mpm

@@ -1,0 +1,79 @@
+#pragma once
+/// What a simulation is built from: grid coordinates, bodies, boundaries,
+/// loads and solver settings. The `mpm` scene kind fills this from JSON; tests
+/// fill it in code.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "mpm/boundary_conditions.hpp"
+#include "mpm/material_group.hpp"
+#include "mpm/shape_functions.hpp"
+
+namespace ffp::mpm {
+
+enum class Transfer : std::uint8_t {
+  usl,   ///< update stress last: strain rate from v_i^{n+1} of the grid update
+  musl,  ///< modified USL (Sulsky et al. 1995): strain rate from momenta remapped from the updated particles
+};
+
+struct SolverSettings {
+  ShapeFunction shape_function = ShapeFunction::gimp;
+  Transfer transfer = Transfer::musl;
+  double flip_fraction = 0.99;  ///< α in v_p ← α·FLIP + (1 − α)·PIC
+  double courant = 0.5;         ///< Δt = C·h_min/(c_p + |v|_max)
+  std::optional<double> fixed_dt_s;  ///< when set, Δt is fixed (checked against the CFL limit every step)
+  bool strain_smoothing = true;      ///< cell-averaged volumetric strain increment (anti-locking)
+  double local_damping = 0.0;        ///< Cundall's local damping coefficient (0: no damping stage)
+};
+
+/// Particles fill the grid cells inside the region (a particle belongs to the
+/// body when its centre is inside).
+struct BoxRegion {
+  double r_min_m = 0.0, r_max_m = 0.0, z_min_m = 0.0, z_max_m = 0.0;
+};
+/// A sphere centred on the axis.
+struct SphereRegion {
+  double center_z_m = 0.0, radius_m = 0.0;
+};
+using Region = std::variant<BoxRegion, SphereRegion>;
+
+/// K0 initial stress: σ'_v = γ·depth, σ'_h = K0·σ'_v (depth below surface_z).
+struct GeostaticStress {
+  double k0 = 0.5;
+  double surface_z_m = 0.0;
+};
+
+struct BodyDescription {
+  std::string name;
+  MaterialLaw law;
+  double density_kg_m3 = 0.0;
+  Region region;
+  int particles_per_cell_r = 2, particles_per_cell_z = 2;
+  double initial_velocity_r_m_s = 0.0, initial_velocity_z_m_s = 0.0;
+  std::optional<GeostaticStress> initial_stress;  ///< needs gravity
+};
+
+enum class Side : std::uint8_t { inner, outer };
+
+/// A normal pressure on the inner or outer grid line r = r_0 / r_max, over
+/// z_min ≤ z ≤ z_max (the body's face must lie on that grid line).
+struct SurfacePressure {
+  Side side = Side::inner;
+  double z_min_m = 0.0, z_max_m = 0.0;
+  std::function<double(double time_s)> pressure_Pa;  ///< compression positive
+};
+
+struct ModelDescription {
+  std::vector<double> r_nodes_m, z_nodes_m;
+  std::vector<BodyDescription> bodies;
+  BoundaryConditions boundaries;
+  std::optional<double> gravity_m_s2;  ///< magnitude, acting along −z; absent: no gravity stage
+  std::vector<SurfacePressure> pressures;
+  SolverSettings solver;
+};
+
+}  // namespace ffp::mpm

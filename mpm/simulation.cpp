@@ -1,0 +1,113 @@
+#include "mpm/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mpm/generate_particles.hpp"
+#include "mpm/stages.hpp"
+
+namespace ffp::mpm {
+
+Simulation::Simulation(const ModelDescription& model)
+    : settings(model.solver), gravity_m_s2(model.gravity_m_s2), pressures(model.pressures) {
+  grid.r = GridAxis(model.r_nodes_m);
+  grid.z = GridAxis(model.z_nodes_m);
+  if (grid.r.front() < 0.0) throw std::invalid_argument("radial node coordinates must be ≥ 0 (axisymmetry)");
+  if (model.bodies.empty()) throw std::invalid_argument("a simulation needs at least one body");
+  if (model.bodies.size() > 255) throw std::invalid_argument("at most 255 bodies");
+  if (!(settings.courant > 0.0 && settings.courant <= 1.0)) throw std::invalid_argument("courant must be in (0, 1]");
+  if (!(settings.flip_fraction >= 0.0 && settings.flip_fraction <= 1.0))
+    throw std::invalid_argument("flip_fraction must be in [0, 1]");
+  grid.fields.resize(1);  // single velocity field; contact adds one per body
+  grid.fields[0].resize(grid.nodes());
+  grid.constraints = constrained_nodes(model.boundaries, grid.r.nodes(), grid.z.nodes(), grid.has_axis());
+  {
+    // The axis is a wall at a hair's breadth off r = 0 (1/r_p must stay finite).
+    const double inf = std::numeric_limits<double>::infinity();
+    const BoundaryConditions& b = model.boundaries;
+    walls.r_min = grid.has_axis() ? 1e-6 * grid.r.spacing(0) : (b.inner == Fixity::free ? -inf : grid.r.front());
+    walls.r_max = b.outer == Fixity::free ? inf : grid.r.back();
+    walls.z_min = b.bottom == Fixity::free ? -inf : grid.z.front();
+    walls.z_max = b.top == Fixity::free ? inf : grid.z.back();
+  }
+
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const BodyDescription& d = model.bodies[b];
+    if (d.initial_stress && !gravity_m_s2)
+      throw std::invalid_argument("body " + d.name + ": a K0 initial stress needs gravity");
+    const std::size_t begin = particles.size();
+    append_body_particles(grid, d, static_cast<std::uint8_t>(b), gravity_m_s2.value_or(0.0), particles);
+    if (particles.size() == begin) throw std::invalid_argument("body " + d.name + " has no particle inside the grid");
+    groups.emplace_back(d.name, d.law, d.density_kg_m3);
+    groups.back().begin = begin;
+    groups.back().end = particles.size();
+    if (std::holds_alternative<StrainSofteningMohrCoulomb>(d.law))
+      groups.back().ssmc_state.assign(groups.back().size(), StrainSofteningMohrCoulomb::State{});
+    bodies.push_back({d.name, b, 0, begin, particles.size()});
+  }
+
+  const double lightest = *std::min_element(particles.mass.begin(), particles.mass.end());
+  // Far below any real nodal mass, far above round-off: only truly empty nodes.
+  mass_floor_kg = 1e-12 * lightest;
+  bins.configure(grid.r.cells(), grid.z.cells());
+  strain_increment.assign(particles.size(), Voigt::Zero());
+  spin_dt.assign(particles.size(), 0.0);
+  stages = build_stages(*this);
+
+  dt_limit_s = cfl_time_step_limit(*this);
+  dt_s = settings.fixed_dt_s ? *settings.fixed_dt_s : settings.courant * dt_limit_s;
+  dt_next_s = dt_s;
+}
+
+void Simulation::advance() {
+  stages.run(*this);
+  time_s += dt_s;
+  ++step;
+  dt_s = dt_next_s;
+}
+
+double cfl_time_step_limit(const Simulation& s) {
+  const Particles& p = s.particles;
+  // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
+  // particle's sum and need no square root per particle. |σ| (a bound on the largest
+  // principal stress) is the geometric stiffness of the current stress: it matters only
+  // where stresses approach the modulus (very soft bodies under gravity), and there
+  // the elastic c_p alone let the step run unstable (measured: an E = 1 kPa block
+  // collapsing under its own weight at Courant 1).
+  double fastest = 0.0;
+  long bad = 0;
+  for (const MaterialGroup& g : s.groups) {
+    double stiffest = 0.0, speed2 = 0.0, stress = 0.0;  // max 1/ρ, max |v|², max |σ|
+    const auto begin = static_cast<std::ptrdiff_t>(g.begin), end = static_cast<std::ptrdiff_t>(g.end);
+    FFP_OMP(omp parallel for schedule(static) reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
+                if (g.size() >= kParallelMinimum))
+    for (std::ptrdiff_t k = begin; k < end; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const double inverse_density = p.volume[i] / p.mass[i];
+      const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
+      const Voigt& sig = p.stress[i];
+      // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
+      const double bound = std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]),
+                                     std::abs(sig[2])});
+      if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
+        ++bad;
+      stiffest = std::max(stiffest, inverse_density);
+      speed2 = std::max(speed2, v2);
+      stress = std::max(stress, bound);
+    }
+    if (bad > 0) break;
+    fastest = std::max(fastest, std::sqrt((g.constrained_modulus() + stress) * stiffest) + std::sqrt(speed2));
+  }
+  if (bad > 0) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!(p.volume[i] > 0.0) || !std::isfinite(p.volume[i]) || !std::isfinite(p.vr[i]) || !std::isfinite(p.vz[i]) ||
+          !p.stress[i].allFinite())
+        throw StepFailure("particle " + std::to_string(i) + " has a non-finite velocity or stress, or a non-positive "
+                          "volume at t = " + std::to_string(s.time_s) + " s (unstable step?)");
+    }
+  }
+  return s.grid.min_spacing() / fastest;
+}
+
+}  // namespace ffp::mpm

@@ -1,0 +1,83 @@
+#pragma once
+/// The state of an axisymmetric explicit MPM run and its step. Stages
+/// (mpm/stages.hpp) are free functions on this state; the step runs them in
+/// the order of `stages`.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "models/voigt.hpp"
+#include "mpm/grid.hpp"
+#include "mpm/material_group.hpp"
+#include "mpm/model.hpp"
+#include "mpm/particle_bins.hpp"
+#include "mpm/particles.hpp"
+#include "mpm/shape_functions.hpp"
+#include "mpm/stage_list.hpp"
+
+namespace ffp::mpm {
+
+/// A step that cannot go on (a particle left the grid, NaN, Δt above the CFL
+/// limit): the caller reports it; mpm/ itself prints nothing.
+class StepFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Where particles are kept by constrained grid sides (±∞ on free sides).
+struct Walls {
+  double r_min, r_max, z_min, z_max;
+};
+
+struct Body {
+  std::string name;
+  std::size_t group = 0;     ///< its material group
+  std::uint8_t field = 0;    ///< the nodal field its particles map to (0 without contact)
+  std::size_t begin = 0, end = 0;  ///< particle range
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const ModelDescription& model);
+
+  /// One explicit step: every stage in order, then t ← t + Δt.
+  void advance();
+
+  // --- configuration (fixed after construction) -----------------------------
+  SolverSettings settings;
+  std::optional<double> gravity_m_s2;      ///< magnitude along −z
+  std::vector<SurfacePressure> pressures;
+  double mass_floor_kg = 0.0;              ///< nodes lighter than this are empty
+
+  // --- state ----------------------------------------------------------------
+  Grid grid;
+  Particles particles;
+  std::vector<MaterialGroup> groups;
+  std::vector<Body> bodies;
+  StageList stages;
+  double time_s = 0.0;
+  double dt_s = 0.0;        ///< step of the current (next) advance()
+  double dt_next_s = 0.0;   ///< set by update_time_step; becomes dt_s after the step
+  double dt_limit_s = 0.0;  ///< CFL limit h_min/(c_p + |v|_max) at the last check
+  long step = 0;
+  Walls walls{};            ///< from the boundary conditions
+  long wall_clamps = 0;     ///< particle moves stopped at a wall or the axis (should stay 0)
+
+  // --- per-step scratch, valid from compute_shape_functions to the step's end
+  std::vector<ShapeWeights> weights;
+  ParticleBins bins;
+  std::vector<std::uint32_t> strip;     ///< each particle's ParticleBins strip
+  std::vector<Voigt> strain_increment;  ///< Δε_p this step (Voigt)
+  std::vector<double> spin_dt;          ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
+  /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.
+  std::vector<double> cell_volume, cell_volumetric_strain, cell_mean_stress;
+};
+
+/// The CFL limit Δt_crit = h_min / (c_p + |v|_max): c_p = √(M/ρ) of each group at
+/// its lowest current density, |v|_max of its particles (throws StepFailure on NaN).
+double cfl_time_step_limit(const Simulation& simulation);
+
+}  // namespace ffp::mpm

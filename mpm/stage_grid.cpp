@@ -1,0 +1,82 @@
+/// Grid (Lagrangian phase) stages: loads, integration, fixities.
+#include <cmath>
+
+#include "mpm/stages.hpp"
+
+namespace ffp::mpm {
+
+// f_i^ext,z −= m_i g : Σ_p S_ip m_p g = m_i g by the partition of unity.
+void apply_gravity(Simulation& s) {
+  const double g = *s.gravity_m_s2;
+  for (NodalField& f : s.grid.fields) {
+    const std::size_t n = f.size();
+    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
+    for (std::size_t i = 0; i < n; ++i) f.external_force_z[i] -= f.mass[i] * g;
+  }
+}
+
+// f_i,r = ± p(t) · r_side · ∫_{z_min}^{z_max} N_j(z) dz  (per radian: the face element is r dθ dz)
+void apply_surface_pressure(Simulation& s) {
+  NodalField& f = s.grid.fields[0];
+  for (const SurfacePressure& load : s.pressures) {
+    const double p = load.pressure_Pa(s.time_s);
+    const bool inner = load.side == Side::inner;
+    const int i = inner ? 0 : s.grid.r.nodes() - 1;
+    const double r = s.grid.r.coordinate(i);
+    const double sign = inner ? 1.0 : -1.0;  // pressure pushes into the body
+    for (int j = 0; j < s.grid.z.nodes(); ++j)
+      f.external_force_r[s.grid.node(i, j)] += sign * p * r * s.grid.z.hat_integral(j, load.z_min_m, load.z_max_m);
+  }
+}
+
+// Cundall's local (non-viscous) damping: f_i ← f_i − α |f_i| sign(v_i), per component.
+void apply_local_damping(Simulation& s) {
+  const double alpha = s.settings.local_damping;
+  const double floor = s.mass_floor_kg;
+  for (NodalField& f : s.grid.fields) {
+    const std::size_t n = f.size();
+    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(f.mass[i] > floor)) continue;
+      const double fr = f.internal_force_r[i] + f.external_force_r[i];
+      const double fz = f.internal_force_z[i] + f.external_force_z[i];
+      const double vr = f.momentum_r[i], vz = f.momentum_z[i];  // same sign as v_i
+      f.external_force_r[i] -= alpha * std::abs(fr) * ((vr > 0.0) - (vr < 0.0));
+      f.external_force_z[i] -= alpha * std::abs(fz) * ((vz > 0.0) - (vz < 0.0));
+    }
+  }
+}
+
+// v_i^n = p_i/m_i ;  v_i^{n+1} = v_i^n + Δt (f_i^int + f_i^ext)/m_i   (empty nodes: 0)
+void integrate_grid(Simulation& s) {
+  const double dt = s.dt_s;
+  const double floor = s.mass_floor_kg;
+  for (NodalField& f : s.grid.fields) {
+    const std::size_t n = f.size();
+    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
+    for (std::size_t i = 0; i < n; ++i) {
+      if (f.mass[i] > floor) {
+        const double inverse_m = 1.0 / f.mass[i];
+        f.velocity_r[i] = f.momentum_r[i] * inverse_m;
+        f.velocity_z[i] = f.momentum_z[i] * inverse_m;
+        f.velocity_new_r[i] = f.velocity_r[i] + dt * (f.internal_force_r[i] + f.external_force_r[i]) * inverse_m;
+        f.velocity_new_z[i] = f.velocity_z[i] + dt * (f.internal_force_z[i] + f.external_force_z[i]) * inverse_m;
+      } else {
+        f.velocity_r[i] = f.velocity_z[i] = f.velocity_new_r[i] = f.velocity_new_z[i] = 0.0;
+      }
+    }
+  }
+}
+
+// Constrained components: v_i^n = v_i^{n+1} = 0, so the FLIP increment there is 0
+// as well (equivalent to zeroing p_i and f_i, Sulsky et al. 1995).
+void apply_boundary_conditions(Simulation& s) {
+  for (NodalField& f : s.grid.fields) {
+    for (const NodeConstraint& c : s.grid.constraints) {
+      if (c.bits & constrain_r) f.velocity_r[c.node] = f.velocity_new_r[c.node] = 0.0;
+      if (c.bits & constrain_z) f.velocity_z[c.node] = f.velocity_new_z[c.node] = 0.0;
+    }
+  }
+}
+
+}  // namespace ffp::mpm

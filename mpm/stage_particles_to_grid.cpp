@@ -1,0 +1,121 @@
+/// Particle → grid transfers. Each scatter runs through ParticleBins, so every
+/// nodal sum has one fixed order (deterministic under OpenMP).
+#include <algorithm>
+
+#include "mpm/stages.hpp"
+
+namespace ffp::mpm {
+
+namespace {
+
+/// Visit the S×S support of particle p: fn(node, S_ip, G_ip,r, G_ip,z).
+template <int S, class Fn>
+inline void for_support(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
+  for (int b = 0; b < S; ++b) {
+    const std::size_t row = grid.node(w.node_r, w.node_z + b);
+    for (int a = 0; a < S; ++a) fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
+  }
+}
+
+template <int S>
+void scatter_mass_momentum(Simulation& s) {
+  const Particles& P = s.particles;
+  s.bins.scatter([&](std::size_t p) {
+    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+    const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
+    for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
+      f.mass[i] += N * m;
+      f.momentum_r[i] += N * pr;
+      f.momentum_z[i] += N * pz;
+    });
+  });
+}
+
+template <int S>
+void scatter_internal_forces(Simulation& s) {
+  const Particles& P = s.particles;
+  const bool smoothed = s.settings.strain_smoothing;
+  const std::size_t bodies = s.bodies.size();
+  s.bins.scatter([&](std::size_t p) {
+    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+    const ShapeWeights& w = s.weights[p];
+    Voigt sig = P.stress[p];
+    if (smoothed) {  // B-bar: the cell's mean stress stands in for the particle's
+      const double shift = s.cell_mean_stress[w.cell * bodies + P.body[p]] - trace(sig) / 3.0;
+      sig[0] += shift;
+      sig[1] += shift;
+      sig[2] += shift;
+    }
+    const double V = P.volume[p], hoop = sig[2] * w.inverse_r;
+    for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {
+      f.internal_force_r[i] -= V * (sig[0] * Gr + sig[3] * Gz + hoop * N);
+      f.internal_force_z[i] -= V * (sig[3] * Gr + sig[1] * Gz);
+    });
+  });
+}
+
+template <int S>
+void scatter_momentum(Simulation& s) {
+  const Particles& P = s.particles;
+  s.bins.scatter([&](std::size_t p) {
+    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+    const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+    for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
+      f.momentum_r[i] += N * pr;
+      f.momentum_z[i] += N * pz;
+    });
+  });
+}
+
+bool linear(const Simulation& s) { return s.settings.shape_function == ShapeFunction::linear; }
+
+}  // namespace
+
+void reset_grid(Simulation& s) {
+  for (NodalField& f : s.grid.fields) f.reset();
+}
+
+// m_i = Σ_p S_ip m_p ;  p_i = Σ_p S_ip m_p v_p
+void map_particles_to_grid(Simulation& s) {
+  if (linear(s)) {
+    scatter_mass_momentum<2>(s);
+  } else {
+    scatter_mass_momentum<3>(s);
+  }
+}
+
+// f_i^int = −Σ_p V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r]   (axisymmetric, per radian;
+// the hoop term is the σ_θθ/r part of div σ in cylindrical coordinates).
+// With strain smoothing σ_p carries its cell's mean stress (smooth_mean_stress).
+void compute_internal_forces(Simulation& s) {
+  if (linear(s)) {
+    scatter_internal_forces<2>(s);
+  } else {
+    scatter_internal_forces<3>(s);
+  }
+}
+
+// MUSL (Sulsky et al. 1995): p_i = Σ_p S_ip m_p v_p^{n+1};  v_i = p_i/m_i
+void map_velocities_to_grid(Simulation& s) {
+  for (NodalField& f : s.grid.fields) {
+    std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
+    std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
+  }
+  if (linear(s)) {
+    scatter_momentum<2>(s);
+  } else {
+    scatter_momentum<3>(s);
+  }
+  const double floor = s.mass_floor_kg;
+  for (NodalField& f : s.grid.fields) {
+    const std::size_t n = f.size();
+    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool filled = f.mass[i] > floor;
+      f.velocity_r[i] = filled ? f.momentum_r[i] / f.mass[i] : 0.0;
+      f.velocity_z[i] = filled ? f.momentum_z[i] / f.mass[i] : 0.0;
+    }
+  }
+}
+
+}  // namespace ffp::mpm

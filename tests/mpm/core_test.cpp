@@ -1,0 +1,141 @@
+/// Unit checks of the MPM core pieces: grid axis, shape functions, stage list,
+/// Jaumann rotation, time step.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "mpm/diagnostics.hpp"
+#include "mpm/grid_axis.hpp"
+#include "mpm/shape_functions.hpp"
+#include "mpm/simulation.hpp"
+#include "mpm/stages.hpp"
+#include "mpm_test_support.hpp"
+
+using namespace ffp;
+using namespace ffp::mpm;
+
+TEST_CASE("grid axis finds the cell of a coordinate on a graded, moving axis", "[mpm][grid]") {
+  GridAxis axis({0.0, 0.1, 0.15, 0.17, 0.3, 1.0});
+  CHECK(axis.cell_of(0.0) == 0);
+  CHECK(axis.cell_of(0.12) == 1);
+  CHECK(axis.cell_of(0.16) == 2);
+  CHECK(axis.cell_of(0.17) == 3);
+  CHECK(axis.cell_of(1.0) == 4);
+  CHECK(axis.cell_of(-1e-9) == -1);
+  CHECK(axis.cell_of(1.0 + 1e-9) == -1);
+  const std::vector<double> moved = {0.0, 0.05, 0.1, 0.5, 0.6, 1.0};
+  axis.set_coordinates(moved);
+  CHECK(axis.cell_of(0.16) == 2);
+  CHECK(axis.min_spacing() == Approx(0.05));
+  CHECK_THROWS_AS(GridAxis({0.0, 0.1, 0.1}), std::invalid_argument);
+  // ∫ N_i over the whole axis is half the sum of the neighbouring cells.
+  CHECK(axis.hat_integral(2, 0.0, 1.0) == Approx(0.5 * (0.05 + 0.4)));
+}
+
+TEST_CASE("shape functions: partition of unity, zero gradient sum, GIMP equals linear inside a cell",
+          "[mpm][shape]") {
+  const GridAxis axis({0.0, 0.1, 0.25, 0.3, 0.5, 0.55});
+  for (double x = 0.0; x <= 0.55; x += 0.00731) {
+    const int c = axis.cell_of(x);
+    for (double half : {0.0, 0.01, 0.025, 0.2}) {
+      const Weights1D w = half == 0.0 ? linear_weights(axis, x, c) : gimp_weights(axis, x, half, c);
+      double sum = 0.0, gradient = 0.0, first_moment = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        sum += w.w[k];
+        gradient += w.g[k];
+        if (w.w[k] != 0.0) first_moment += w.w[k] * axis.coordinate(w.base + k);
+        CHECK(w.w[k] >= -1e-15);
+      }
+      CHECK(sum == Approx(1.0).epsilon(1e-14));
+      CHECK(gradient == Approx(0.0).margin(1e-9));
+      // Linear completeness: Σ S_i x_i = x (the domain average of x is x itself).
+      CHECK(first_moment == Approx(x).margin(1e-14));
+    }
+  }
+  // A GIMP domain inside one cell averages a linear hat: same as point evaluation.
+  const Weights1D g = gimp_weights(axis, 0.16, 0.02, 1), l = linear_weights(axis, 0.16, 1);
+  const int shift = l.base - g.base;
+  for (int k = 0; k < 2; ++k) {
+    CHECK(g.w[k + shift] == Approx(l.w[k]));
+    CHECK(g.g[k + shift] == Approx(l.g[k]));
+  }
+  // Across a node the GIMP gradient is continuous (linear hats jump).
+  const Weights1D left = gimp_weights(axis, 0.1 - 1e-9, 0.02, 0), right = gimp_weights(axis, 0.1 + 1e-9, 0.02, 1);
+  for (int k = 0; k < 3; ++k) {
+    const int node = left.base + k;
+    const int j = node - right.base;
+    if (j >= 0 && j < 3) CHECK(left.g[k] == Approx(right.g[j]).margin(1e-6));
+  }
+}
+
+TEST_CASE("stage list: a model gets only the stages it needs; stages insert by name", "[mpm][stages]") {
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.1, 4);
+  m.z_nodes_m = testing::nodes(0.0, 0.1, 4);
+  m.bodies.push_back(testing::elastic_body("b", 1e6, 0.3, 1000.0, BoxRegion{0, 0.05, 0, 0.05}));
+  m.solver.transfer = Transfer::usl;
+  m.solver.strain_smoothing = false;
+  Simulation weightless(m);
+  CHECK_FALSE(weightless.stages.contains("apply_gravity"));
+  CHECK_FALSE(weightless.stages.contains("map_velocities_to_grid"));
+  CHECK_FALSE(weightless.stages.contains("smooth_volumetric_strain"));
+  CHECK_FALSE(weightless.stages.contains("apply_local_damping"));
+  m.gravity_m_s2 = 9.81;
+  m.solver.transfer = Transfer::musl;
+  m.solver.strain_smoothing = true;
+  Simulation heavy(m);
+  CHECK(heavy.stages.contains("apply_gravity"));
+  CHECK(heavy.stages.contains("map_velocities_to_grid"));
+  CHECK(heavy.stages.contains("smooth_volumetric_strain"));
+  CHECK(heavy.stages.contains("smooth_mean_stress"));
+
+  int calls = 0;
+  heavy.stages.insert_after("integrate_grid", {"count_calls", [&calls](Simulation&) { ++calls; }});
+  const auto names = heavy.stages.names();
+  const auto at = std::find(names.begin(), names.end(), "count_calls");
+  REQUIRE(at != names.end());
+  CHECK(*(at - 1) == "integrate_grid");
+  heavy.advance();
+  heavy.advance();
+  CHECK(calls == 2);
+  CHECK_THROWS_AS(heavy.stages.insert_before("no_such_stage", {"x", [](Simulation&) {}}), std::invalid_argument);
+}
+
+TEST_CASE("Jaumann rotation turns the stress with the material spin", "[mpm][stress]") {
+  // Rigid spin Ω in the (r, z) plane: L_rz = −Ω, L_zr = Ω, W_rz = −Ω. Over one step the
+  // stress must turn by Ω Δt: σ' = R σ Rᵀ to first order.
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.1, 4);
+  m.z_nodes_m = testing::nodes(0.0, 0.1, 4);
+  m.bodies.push_back(testing::elastic_body("b", 1e6, 0.3, 1000.0, BoxRegion{0, 0.025, 0, 0.025}, 0, 0, 1));
+  Simulation s(m);
+  const double angle = 1e-4;  // Ω Δt
+  s.strain_increment.assign(s.particles.size(), Voigt::Zero());
+  s.spin_dt.assign(s.particles.size(), -angle);
+  Voigt sigma = Voigt::Zero();
+  sigma[0] = -100.0;  // σ_rr
+  sigma[1] = -300.0;  // σ_zz
+  s.particles.stress.assign(s.particles.size(), sigma);
+  update_stresses(s);
+  const Voigt& out = s.particles.stress[0];
+  // With R = [[cos θ, −sin θ], [sin θ, cos θ]] (counter-clockwise in (r, z)):
+  // (RσRᵀ)_rz = (σ_rr − σ_zz) sin θ cos θ, (RσRᵀ)_rr = σ_rr + O(θ²).
+  CHECK(out[3] == Approx((sigma[0] - sigma[1]) * angle).epsilon(1e-6));
+  CHECK(out[0] == Approx(sigma[0]).epsilon(1e-9));
+  CHECK(out[2] == sigma[2]);
+}
+
+TEST_CASE("time step follows the CFL limit; a fixed step above it stops the run", "[mpm][time_step]") {
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.1, 10);
+  m.z_nodes_m = testing::nodes(0.0, 0.2, 40);  // h_min = 5 mm
+  m.bodies.push_back(testing::elastic_body("b", 1e7, 0.25, 2000.0, BoxRegion{0, 0.1, 0, 0.1}, 0.0, -2.0));
+  m.solver.courant = 0.4;
+  Simulation s(m);
+  const double c = ElasticConstants{1e7, 0.25}.p_wave_speed(2000.0);
+  CHECK(s.dt_limit_s == Approx(0.005 / (c + 2.0)).epsilon(1e-12));
+  CHECK(s.dt_s == Approx(0.4 * s.dt_limit_s).epsilon(1e-12));
+  m.solver.fixed_dt_s = 1.01 * s.dt_limit_s;
+  Simulation fixed(m);
+  CHECK_THROWS_AS(fixed.advance(), StepFailure);
+}
