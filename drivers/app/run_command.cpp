@@ -145,10 +145,4 @@ int command_check(const Arguments& args) {
   }
 }
 
-int command_bench(const Arguments&) {
-  std::fputs("ffp bench: not available yet in this version (the speed benchmarks are the ffp_bench_* programs)\n",
-             stderr);
-  return 1;
-}
-
 }  // namespace ffp

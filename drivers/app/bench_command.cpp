@@ -1,0 +1,102 @@
+/// `ffp bench`: end-to-end speed of representative scenes (median of repeats).
+/// The Google Benchmark programs in bench/ measure the kernels (constitutive
+/// updates/s, MPM particle-steps/s); this measures what a user waits for.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "drivers/app/commands.hpp"
+#include "drivers/app/version.hpp"
+#include "drivers/output/interrupt.hpp"
+#include "drivers/scene/scene_error.hpp"
+#include "reports/run_pool.hpp"
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int command_bench(const Arguments& args) {
+  try {
+    int repeats = 3;
+    fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      if (args[i] == "--repeat" && i + 1 < args.size()) {
+        repeats = std::atoi(args[++i].c_str());
+        if (repeats < 1 || repeats > 100) throw SceneError("--repeat: must be an integer in [1, 100]");
+      } else if (args[i] == "--scenes" && i + 1 < args.size()) {
+        scenes = args[++i];
+      } else {
+        throw SceneError("ffp bench: unknown option '" + args[i] + "' (usage: ffp bench [--repeat N] [--scenes DIR])");
+      }
+    }
+    const std::vector<std::string> candidates = {"point_triaxial_ssmc.json", "triaxial_ssmc_paper.json",
+                                                 "calibration_dr15.json",    "mpm_geostatic_column.json",
+                                                 "ffp_reference.json",       "cpt_reference.json"};
+    std::vector<RunRequest> requests;
+    for (const auto& c : candidates)
+      if (fs::exists(scenes / c)) requests.push_back({fs::path(c).stem().string(), scenes / c, {}});
+    if (requests.empty()) throw SceneError("--scenes: no benchmark scenes found in " + scenes.string());
+
+    const fs::path scratch = fs::temp_directory_path() / ("ffp-bench-" + std::to_string(std::random_device{}()));
+    std::vector<std::vector<nlohmann::json>> summaries(requests.size());
+    for (int r = 0; r < repeats; ++r) {
+      // A fresh cache root each time: every repeat really runs.
+      const auto outcomes = run_all("/proc/self/exe", requests, scratch / std::to_string(r), FFP_VERSION, 1);
+      for (std::size_t i = 0; i < outcomes.size(); ++i) {
+        if (outcomes[i].exit_code != 0) continue;
+        std::ifstream in(outcomes[i].out_dir / "summary.json");
+        summaries[i].push_back(nlohmann::json::parse(in));
+      }
+    }
+    std::error_code ignored;
+    fs::remove_all(scratch, ignored);
+
+    std::printf("%s, %u hardware threads, median of %d runs (wall time inside the run, without process start)\n\n",
+                version_string().c_str(), std::thread::hardware_concurrency(), repeats);
+    std::printf("| scene | wall time [s] | steps | steps/s | particles | particle-steps/s |\n|---|---|---|---|---|---|\n");
+    int failures = 0;
+    for (std::size_t i = 0; i < requests.size(); ++i) {
+      if (summaries[i].empty()) {
+        std::printf("| %s | FAILED | | | | |\n", requests[i].label.c_str());
+        ++failures;
+        continue;
+      }
+      std::vector<double> wall;
+      for (const auto& s : summaries[i]) wall.push_back(s.value("wall_time_s", 0.0));
+      const double t = median(wall);
+      const double steps = summaries[i].front().value("steps", 0.0);
+      const double particles = summaries[i].front().value("particles", 0.0);
+      char particle_columns[96] = "– | –";
+      if (particles > 0)
+        std::snprintf(particle_columns, sizeof particle_columns, "%.0f | %.2f M", particles, particles * steps / t / 1e6);
+      std::printf("| %s | %.3f | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, steps, steps / t,
+                  particle_columns);
+    }
+    return failures == 0 ? 0 : 1;
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const Interrupted&) {
+    std::fputs("interrupted\n", stderr);
+    return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace ffp
