@@ -90,7 +90,7 @@ int command_report(const Arguments& args) {
     document.raw("# ffp validation report\n\n");
     document.paragraph(
         "Reproduction of the studies of Zambrano-Cruzatty & Yerro (2020), *Numerical simulation of a free fall "
-        "penetrometer deployment using the material point method*, Soils and Foundations 60, with the ffp "
+        "penetrometer deployment using the material point method*, Soils and Foundations (2020), with the ffp "
         "axisymmetric MPM solver and its constitutive-model testbed. Every number below was computed by the runs "
         "listed at the end; nothing is copied from the paper except the values in the 'paper' columns.");
     document.table({"", ""}, {{"program", version_string()},

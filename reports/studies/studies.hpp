@@ -7,5 +7,6 @@
 namespace ffp {
 
 Study integration_error_study(const std::filesystem::path& scenes_dir);
+Study calibration_study(const std::filesystem::path& scenes_dir);
 
 }  // namespace ffp
