@@ -5,7 +5,9 @@
 #include <csignal>
 #include <cstdio>
 #include <fstream>
+#include <cstdlib>
 #include <map>
+#include <thread>
 #include <sstream>
 
 #include <fcntl.h>
@@ -104,6 +106,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   };
   std::map<pid_t, Running> running;
   std::size_t next = 0, finished = 0;
+  std::vector<char*> child_environ;  // filled below, before the first launch
   auto launch = [&](std::size_t i) {
     const RunRequest& r = requests[i];
     std::vector<std::string> args = {ffp_binary.string(), "run", r.scene_file.string(), "--out",
@@ -121,7 +124,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), child_environ.data());
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) {
       outcomes[i].exit_code = 127;
@@ -133,6 +136,17 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   };
 
   const std::size_t parallel = static_cast<std::size_t>(std::max(1, jobs));
+  // Runs side by side share the cores: give each its share of OpenMP threads
+  // (spinning threads on an oversubscribed machine slow everything down),
+  // unless the user chose OMP_NUM_THREADS.
+  std::vector<std::string> environment;
+  for (char** e = environ; *e != nullptr; ++e) environment.emplace_back(*e);
+  if (std::getenv("OMP_NUM_THREADS") == nullptr) {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    environment.push_back("OMP_NUM_THREADS=" + std::to_string(std::max<std::size_t>(1, cores / parallel)));
+  }
+  for (auto& e : environment) child_environ.push_back(e.data());
+  child_environ.push_back(nullptr);
   while (finished < pending.size()) {
     while (running.size() < parallel && next < pending.size()) launch(pending[next++]);
     if (running.empty()) continue;
