@@ -87,8 +87,16 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   fs::create_directories(cache_root);
   std::vector<RunOutcome> outcomes(requests.size());
   std::vector<std::size_t> pending;
+  std::map<std::string, std::size_t> first_with_key;  // studies may share a run: run it once
+  std::vector<std::pair<std::size_t, std::size_t>> duplicates;
   for (std::size_t i = 0; i < requests.size(); ++i) {
-    outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + run_key(requests[i], program_version));
+    const std::string key = run_key(requests[i], program_version);
+    const auto [it, inserted] = first_with_key.emplace(key, i);
+    if (!inserted) {
+      duplicates.emplace_back(i, it->second);
+      continue;
+    }
+    outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + key);
     if (fs::exists(outcomes[i].out_dir / "summary.json")) {
       outcomes[i].cached = true;
       outcomes[i].exit_code = 0;
@@ -96,7 +104,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
       pending.push_back(i);
     }
   }
-  const std::size_t cached = requests.size() - pending.size();
+  const std::size_t cached = requests.size() - duplicates.size() - pending.size();
   std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
 
   struct Running {
@@ -171,9 +179,13 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     std::error_code ignored;
     if (o.exit_code == 0) fs::remove(it->second.log, ignored);
     ++finished;
-    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, requests.size(),
+    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, requests.size() - duplicates.size(),
                  requests[it->second.index].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
     running.erase(it);
+  }
+  for (const auto& [copy, original] : duplicates) {
+    outcomes[copy] = outcomes[original];
+    outcomes[copy].cached = true;
   }
   return outcomes;
 }

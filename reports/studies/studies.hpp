@@ -8,5 +8,13 @@ namespace ffp {
 
 Study integration_error_study(const std::filesystem::path& scenes_dir);
 Study calibration_study(const std::filesystem::path& scenes_dir);
+Study ffp_compressibility_study(const std::filesystem::path& scenes_dir);
+Study ffp_stiffness_study(const std::filesystem::path& scenes_dir);
+Study ffp_contact_friction_study(const std::filesystem::path& scenes_dir);
+Study ffp_dilatancy_study(const std::filesystem::path& scenes_dir);
+Study ffp_peak_friction_study(const std::filesystem::path& scenes_dir);
+Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir);
+Study ffp_convergence_study(const std::filesystem::path& scenes_dir);
+Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir);
 
 }  // namespace ffp

@@ -1,0 +1,125 @@
+/// Mesh convergence of the reference FFP run: peak deceleration and final
+/// penetration against wall time, with the error against a Richardson
+/// extrapolation of the three finest meshes (or the finest, if that fails).
+#include <cmath>
+
+#include "reports/studies/ffp_figures.hpp"
+#include "reports/studies/studies.hpp"
+#include "reports/studies/study_helpers.hpp"
+
+namespace ffp {
+
+namespace {
+
+const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
+
+struct Extrapolation {
+  double value;
+  double order;  // NaN when the finest value is used instead
+};
+
+/// Richardson from three meshes halving in size: order p = log2((Q_2h − Q_h)/(Q_h − Q_h/2)).
+/// Accepted only for a monotone sequence with 0.3 < p < 4; else the finest value.
+Extrapolation richardson(double coarse, double medium, double fine) {
+  const double a = coarse - medium, b = medium - fine;
+  if (std::isfinite(a) && std::isfinite(b) && a * b > 0 && std::abs(b) < std::abs(a)) {
+    const double p = std::log2(a / b);
+    if (p > 0.3 && p < 4.0) return {fine - b / (std::pow(2.0, p) - 1.0), p};
+  }
+  return {fine, std::nan("")};
+}
+
+}  // namespace
+
+Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
+  Study study;
+  study.title = "Mesh convergence of the reference run: error against run time";
+  for (double h : kMinCells_m)
+    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "min cell " + fixed(100 * h, 2) + " cm",
+                                   {"mesh.min_cell_m=" + fixed(h, 4)}));
+  study.write = [](const StudyResults& results, StudyOutput& out) {
+    auto& md = out.document;
+    md.paragraph(
+        "The reference scene with every mesh size following the minimum cell (2, 1, 0.5 and 0.25 cm). The "
+        "reference value of each quantity is the Richardson extrapolation of the three finest meshes when they "
+        "converge monotonically with an order between 0.3 and 4, otherwise the finest mesh's value.");
+    const std::size_t n = results.size();
+    std::vector<double> peak(n), depth(n), wall(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      peak[i] = figure(results, i, "peak_deceleration_g");
+      depth[i] = figure(results, i, "final_penetration_m");
+      wall[i] = figure(results, i, "wall_time_s");
+    }
+    const Extrapolation peak_ref = richardson(peak[n - 3], peak[n - 2], peak[n - 1]);
+    const Extrapolation depth_ref = richardson(depth[n - 3], depth[n - 2], depth[n - 1]);
+    std::vector<std::vector<std::string>> rows;
+    Series peak_error{{}, {}, "peak deceleration", "linespoints"}, depth_error{{}, {}, "final penetration", "linespoints"};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double e_peak = std::abs(peak[i] - peak_ref.value) / std::abs(peak_ref.value);
+      const double e_depth = std::abs(depth[i] - depth_ref.value) / std::abs(depth_ref.value);
+      rows.push_back({fixed(100 * kMinCells_m[i], 2), fixed(figure(results, i, "particles"), 0),
+                      fixed(figure(results, i, "steps"), 0), fixed(wall[i], 1), fixed(peak[i], 2),
+                      fixed(100 * e_peak, 1), fixed(100 * depth[i], 2), fixed(100 * e_depth, 1)});
+      if (std::isfinite(wall[i]) && e_peak > 0) {
+        peak_error.x.push_back(wall[i]);
+        peak_error.y.push_back(e_peak);
+      }
+      if (std::isfinite(wall[i]) && e_depth > 0) {
+        depth_error.x.push_back(wall[i]);
+        depth_error.y.push_back(e_depth);
+      }
+    }
+    md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "peak [g]", "error [%]", "final penetration [cm]",
+              "error [%]"},
+             rows);
+    auto describe = [](const char* what, const Extrapolation& e, double scale, const char* unit) {
+      return std::string(what) + ": reference " + fixed(scale * e.value, 2) + " " + unit +
+             (std::isfinite(e.order) ? " (Richardson, observed order " + fixed(e.order, 2) + ")"
+                                     : " (finest mesh: the sequence is not in the asymptotic range)");
+    };
+    md.paragraph(describe("Peak deceleration", peak_ref, 1.0, "g") + "; " +
+                 describe("final penetration", depth_ref, 100.0, "cm") + ".");
+    Plot p{"Error against wall time (2 cores)", "wall time of the run (s)", "relative error", {peak_error, depth_error},
+           true, true, false, "top right"};
+    if (write_png(p, out.figures_dir / "convergence_error_vs_wall_time.png"))
+      md.figure(out.figures_relative + "/convergence_error_vs_wall_time.png",
+                "Relative error of peak deceleration and final penetration against wall time, one point per mesh.");
+    std::vector<LabelledRun> runs;
+    for (std::size_t i = 0; i < n; ++i) runs.push_back({i, "min cell " + fixed(100 * kMinCells_m[i], 2) + " cm"});
+    ffp_depth_profiles_figure(results, runs, "Mesh convergence", "convergence_profiles.png", out);
+  };
+  return study;
+}
+
+Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
+  Study study;
+  study.title = "Summary: the paper and the experiment against ours";
+  study.runs = {scene_run(scenes_dir, "ffp_reference.json", "rigid FFP"),
+                scene_run(scenes_dir, "ffp_calibrated.json", "FFP, calibrated SSMC (φ'_p = 60°)")};
+  study.write = [](const StudyResults& results, StudyOutput& out) {
+    auto& md = out.document;
+    const double peak = figure(results, 0, "peak_deceleration_g");
+    const double final_depth = figure(results, 0, "final_penetration_m");
+    const double time_of_peak = figure(results, 0, "time_of_peak_s");
+    const double rest = figure(results, 0, "final_reaction_N");
+    const double cal_peak = figure(results, 1, "peak_deceleration_g");
+    const double cal_depth = figure(results, 1, "final_penetration_m");
+    md.table({"quantity", "paper / experiment", "ours", "difference"},
+             {{"MC reference: peak deceleration", "≈ 15 g (paper)", fixed(peak, 1) + " g", percent_difference(peak, 15.0)},
+              {"MC reference: time of peak", "≈ 0.03 s (paper, Fig. 7)", fixed(time_of_peak, 3) + " s",
+               percent_difference(time_of_peak, 0.03)},
+              {"MC reference: final penetration", "18–20 cm (paper)", fixed(100 * final_depth, 1) + " cm",
+               percent_difference(100 * final_depth, 19.0) + " vs 19 cm"},
+              {"MC reference: reaction at rest", "≈ weight 75.6 N (paper, Fig. 7d)", fixed(rest, 1) + " N",
+               percent_difference(rest, 75.6)},
+              {"calibrated SSMC φ'_p = 60°: peak deceleration", "19.4 g (experiment)", fixed(cal_peak, 1) + " g",
+               percent_difference(cal_peak, 19.4)},
+              {"calibrated SSMC φ'_p = 60°: final penetration", "≈ 15.2 cm (experiment, derived: see data/experiment)",
+               fixed(100 * cal_depth, 1) + " cm", percent_difference(100 * cal_depth, 15.2)}});
+    md.paragraph("The experiment's time histories are not public; the comparisons use the scalar values the paper "
+                 "states (data/experiment/). The paper's own numbers are read from its text, not from its figures.");
+  };
+  return study;
+}
+
+}  // namespace ffp
