@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 
+#include "mpm/ffp_model.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
 
@@ -104,5 +105,23 @@ BENCHMARK(BM_MpmStep)
     ->Args({1, 1, 320})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The reference FFP scene (paper section 4, 1 cm minimum cell, rigid body,
+// contact, moving mesh): steps per second during penetration, 1 and 2 threads.
+// 200 steps first, so that the body is in the sand and the contact is active.
+void BM_FfpReferenceStep(benchmark::State& state) {
+  const int previous = thread_count();
+  set_thread_count(static_cast<int>(state.range(0)));
+  FfpDescription d;
+  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * kDegree, 0.0, 0.0});
+  d.contact.friction = std::tan(20.0 * kDegree);
+  FfpRun run(d);
+  for (int k = 0; k < 200; ++k) run.advance();
+  for (auto _ : state) run.advance();
+  state.counters["particles"] = static_cast<double>(run.simulation().particles.size());
+  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  set_thread_count(previous);
+}
+BENCHMARK(BM_FfpReferenceStep)->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

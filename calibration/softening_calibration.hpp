@@ -47,6 +47,22 @@ struct CalibrationSettings {
   std::optional<double> eta_start;
   int scan_points = 9;        ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
   int max_iterations = 50;    ///< Ceres iterations
+  /// Step in ln η of the central differences. It must be large enough that the
+  /// numerical triaxial's noise is small against W'·step: the element test's W is
+  /// smooth to ~1e-10 (1e-4 is plenty); a dynamic MPM specimen's W jitters from
+  /// one η to the next, by ~1e-5 relative at 2 cm and up to ±2e-3 at 0.5 cm,
+  /// against W' ≈ 0.04 W per unit ln η near the match (0.1 lifts the slope above it).
+  double derivative_step = 1e-4;
+  /// Ceres' parameter tolerance: the fit stops when a step changes ln η by less
+  /// than this (relative). 1e-8 for the element test; an MPM specimen's noise
+  /// makes anything below ~1e-4 a random walk.
+  double parameter_tolerance = 1e-8;
+  /// dissipated_work only: the fit stops as soon as |W_model − W_lab| ≤
+  /// work_tolerance·W_lab (0: never; Ceres' tolerances decide). A specimen whose
+  /// W jitters by ±0.2 % from one η to the next (the 0.5 cm MPM specimen) has no
+  /// better answer than its jitter, and Ceres' step tests, which assume a smooth
+  /// cost, may otherwise stop on a trust region shrunk by noise, away from W_lab.
+  double work_tolerance = 0.0;
   TriaxialSpecimen specimen;  ///< turns q–ε_a into F–δ, the same for the lab and the model
 };
 
@@ -68,7 +84,7 @@ struct CalibrationResult {
   int iterations = 0;                       ///< Ceres iterations (successful + unsuccessful steps)
   int model_runs = 0;                       ///< numerical triaxials run, scan and derivatives included
   std::string termination;                  ///< Ceres' termination type and message
-  bool converged = false;                   ///< Ceres reported CONVERGENCE
+  bool converged = false;                   ///< Ceres reported CONVERGENCE (or the work tolerance was met)
   bool at_bound = false;                    ///< η within 1e-6 (relative) of η_min or η_max
   double wall_time_s = 0.0;                 ///< the whole calibration, scan included
   std::vector<WorkSample> scan;             ///< W(η) on the log-spaced scan

@@ -1,5 +1,7 @@
 #include "mpm/generate_particles.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "mpm/initial_stress.hpp"
@@ -8,9 +10,13 @@ namespace ffp::mpm {
 
 namespace {
 
+bool inside(const BoxRegion& box, double r, double z) {
+  return r >= box.r_min_m && r <= box.r_max_m && z >= box.z_min_m && z <= box.z_max_m;
+}
+
 bool inside(const Region& region, double r, double z) {
-  if (const auto* box = std::get_if<BoxRegion>(&region))
-    return r >= box->r_min_m && r <= box->r_max_m && z >= box->z_min_m && z <= box->z_max_m;
+  if (const auto* box = std::get_if<BoxRegion>(&region)) return inside(*box, r, z);
+  if (const auto* shape = std::get_if<ShapeRegion>(&region)) return shape->contains(r, z);
   const auto& sphere = std::get<SphereRegion>(region);
   const double dz = z - sphere.center_z_m;
   return r * r + dz * dz <= sphere.radius_m * sphere.radius_m;
@@ -19,11 +25,13 @@ bool inside(const Region& region, double r, double z) {
 }  // namespace
 
 void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
-                           double gravity_m_s2, Particles& particles) {
+                           double gravity_m_s2, Particles& particles, std::span<const SeedingZone> zones) {
   if (body.particles_per_cell_r < 1 || body.particles_per_cell_z < 1)
     throw std::invalid_argument("body " + body.name + ": particles per cell must be ≥ 1");
   if (!(body.density_kg_m3 > 0.0)) throw std::invalid_argument("body " + body.name + ": density must be > 0");
-  const int nr = body.particles_per_cell_r, nz = body.particles_per_cell_z;
+  for (const SeedingZone& zone : zones)
+    if (zone.body == body_index && !(zone.spacing_r_m > 0.0 && zone.spacing_z_m > 0.0))
+      throw std::invalid_argument("body " + body.name + ": a seeding zone's particle spacing must be > 0");
   const int cells_r = grid.r.cells(), cells_z = grid.z.cells();
   const bool r_outer = cells_r >= cells_z;  // same rule as ParticleBins::configure
   const double unit_weight = body.density_kg_m3 * gravity_m_s2;
@@ -31,6 +39,15 @@ void append_body_particles(const Grid& grid, const BodyDescription& body, std::u
   for (int outer = 0; outer < outer_count; ++outer) {
     for (int inner = 0; inner < inner_count; ++inner) {
       const int i = r_outer ? outer : inner, j = r_outer ? inner : outer;
+      int nr = body.particles_per_cell_r, nz = body.particles_per_cell_z;
+      const double centre_r = grid.r.coordinate(i) + 0.5 * grid.r.spacing(i);
+      const double centre_z = grid.z.coordinate(j) + 0.5 * grid.z.spacing(j);
+      for (const SeedingZone& zone : zones) {
+        if (zone.body != body_index || !inside(zone.region, centre_r, centre_z)) continue;
+        nr = std::max(1, static_cast<int>(std::lround(grid.r.spacing(i) / zone.spacing_r_m)));
+        nz = std::max(1, static_cast<int>(std::lround(grid.z.spacing(j) / zone.spacing_z_m)));
+        break;
+      }
       const double hr = grid.r.spacing(i) / nr, hz = grid.z.spacing(j) / nz;
       for (int a = 0; a < nr; ++a) {
         for (int b = 0; b < nz; ++b) {

@@ -1,6 +1,7 @@
 #pragma once
 /// Filling a body's region with particles on a regular sub-lattice of the grid cells.
 #include <cstdint>
+#include <span>
 
 #include "mpm/grid.hpp"
 #include "mpm/model.hpp"
@@ -13,8 +14,9 @@ namespace ffp::mpm {
 /// m_p = ρ·V_p, GIMP half-lengths half the sub-cell sides. Cells are visited
 /// along the longer grid direction first, so that the particles of one
 /// ParticleBins strip sit together in memory. Sets the K0 stress when asked
-/// (unit weight ρ·g).
+/// (unit weight ρ·g). Cells whose centre lies in one of the body's seeding
+/// zones are seeded at the zone's spacing instead.
 void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
-                           double gravity_m_s2, Particles& particles);
+                           double gravity_m_s2, Particles& particles, std::span<const SeedingZone> zones = {});
 
 }  // namespace ffp::mpm

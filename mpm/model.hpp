@@ -2,6 +2,7 @@
 /// What a simulation is built from: grid coordinates, bodies, boundaries,
 /// loads and solver settings. The `mpm` scene kind fills this from JSON; tests
 /// fill it in code.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -39,7 +40,21 @@ struct BoxRegion {
 struct SphereRegion {
   double center_z_m = 0.0, radius_m = 0.0;
 };
-using Region = std::variant<BoxRegion, SphereRegion>;
+/// Any shape given by a membership test on (r, z), e.g. the penetrometer's outline.
+struct ShapeRegion {
+  std::function<bool(double r_m, double z_m)> contains;
+};
+using Region = std::variant<BoxRegion, SphereRegion, ShapeRegion>;
+
+/// Denser seeding inside part of a body: grid cells of `body` whose centre lies
+/// in `region` get round(h_r/spacing_r) × round(h_z/spacing_z) particles (at least
+/// 1 × 1) instead of the body's particles per cell, so that the particle spacing
+/// stays the same in cells of different size (a graded or compressing mesh).
+struct SeedingZone {
+  std::size_t body = 0;
+  BoxRegion region;
+  double spacing_r_m = 0.0, spacing_z_m = 0.0;
+};
 
 /// K0 initial stress: σ'_v = γ·depth, σ'_h = K0·σ'_v (depth below surface_z).
 struct GeostaticStress {
@@ -74,6 +89,7 @@ struct ModelDescription {
   std::optional<double> gravity_m_s2;  ///< magnitude, acting along −z; absent: no gravity stage
   std::vector<SurfacePressure> pressures;
   SolverSettings solver;
+  std::vector<SeedingZone> seeding_zones;  ///< first matching zone wins; none: bodies' particles per cell
 };
 
 }  // namespace ffp::mpm

@@ -37,7 +37,8 @@ Simulation::Simulation(const ModelDescription& model)
     if (d.initial_stress && !gravity_m_s2)
       throw std::invalid_argument("body " + d.name + ": a K0 initial stress needs gravity");
     const std::size_t begin = particles.size();
-    append_body_particles(grid, d, static_cast<std::uint8_t>(b), gravity_m_s2.value_or(0.0), particles);
+    append_body_particles(grid, d, static_cast<std::uint8_t>(b), gravity_m_s2.value_or(0.0), particles,
+                          model.seeding_zones);
     if (particles.size() == begin) throw std::invalid_argument("body " + d.name + " has no particle inside the grid");
     groups.emplace_back(d.name, d.law, d.density_kg_m3);
     groups.back().begin = begin;

@@ -7,17 +7,42 @@
 ///   material             an ssmc material (no density: weightless specimen); its eta
 ///                        is where the fit starts
 ///   mode                 dissipated_work (the paper's, default) | curve_least_squares
-///   compare_modes        also fit with the other criterion, reported under other_mode (default true)
+///   compare_modes        also fit with the other criterion, reported under other_mode (default
+///                        true; false with an mpm specimen, where it doubles the cost)
 ///   fit_peak_friction    replace phi_peak_deg by the lab peak's, asin((N−1)/(N+1)),
 ///                        N = 1 + q_peak/σ3 (c' = 0 only; default false)
 ///   eta_min, eta_max     bounds of η (default 0.1, 500)
 ///   compare_eta          η of the extra curves in the figure (default the paper's [2.5, 15])
 ///   cell_pressure_kPa    σ3 (default 1.72)
-///   specimen             {height_m: 0.15, diameter_m: 0.07}
-///   increments           of the element test over the lab's strain range (default 1000)
-///   strain_rate_per_s    only the rate law sees it (default 1e-4)
+///   specimen             the numerical triaxial, {type, height_m: 0.15, diameter_m: 0.07, ...}:
+///     type: element      (default) the single-point element test (drivers/triaxial_test.hpp),
+///                        with the top-level keys
+///       increments         over the lab's strain range (default 1000)
+///       strain_rate_per_s  only the rate law sees it (default 1e-4)
+///     type: mpm          the meshed axisymmetric MPM specimen (calibration/mpm_triaxial_specimen.hpp),
+///                        whose own keys sit in the specimen object:
+///       cell_m              nominal cell size (default 0.01, the paper's FFP mesh)
+///       platen_velocity_m_s after the ramp (default 0.01: halving it moves W by < 1 %)
+///       platens             rough (default) | smooth
+///       shape_function      gimp (default) | linear
+///       courant             (default 0.9)
+///       flip_fraction       FLIP share of the particle velocity update (default 0.9)
+///       particles_per_cell  per direction (default 2)
+///       density_kg_m3       sets the time scale only (default 14.6 kN/m³ / g)
+///       output_strain_step  ε_a between the curve's points (default 0.001)
+///       radial_margin       empty grid beyond the radius, fraction of it (default 0.5)
+///                        Each key belongs to one type: an element scene with mpm keys (or
+///                        the other way round) is bad input.
 ///   scan_points          log-spaced η of the W(η) check (default 9)
 ///   max_iterations       Ceres iterations (default 50)
+///   derivative_step_ln_eta  central-difference step of the fit in ln η (default: element
+///                        1e-4; mpm 0.1 — the MPM's W jitters by up to ±0.2 % between
+///                        neighbouring η at 0.5 cm, and the slope must stand above that)
+///   parameter_tolerance  Ceres stops when ln η changes by less (relative; element 1e-8, mpm 1e-4)
+///   work_tolerance       dissipated_work: stop once |W_model/W_lab − 1| is below (element 0:
+///                        off; mpm 2e-4). Set it near the specimen's jitter in W: tighter
+///                        costs runs, looser costs η where W is flat in η (at 2 cm
+///                        1e-3 of W is ±20 % of η)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -25,12 +50,14 @@
 #include <ostream>
 
 #include "calibration/lab_curve.hpp"
+#include "calibration/mpm_triaxial_specimen.hpp"
 #include "calibration/softening_calibration.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/kinds.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/scene/material_scene.hpp"
+#include "mpm/simulation.hpp"
 #include "reports/plot.hpp"
 
 namespace ffp {
@@ -60,16 +87,32 @@ const char* kWorkNote =
     "differs from the model's plastic work (what the law dissipates) by the elastic energy still stored and by "
     "the cell pressure's work σ3·ΔV on the specimen's volume change";
 
+enum class SpecimenType { element, mpm };
+
 struct CalibrationSpec {
   fs::path lab_file;
   LabCurve lab;
   StrainSofteningParameters material;
   bool fitted_peak_friction = false;
   double eta_start = 8.0;
-  TriaxialTestConfig test;
+  SpecimenType specimen = SpecimenType::element;
+  TriaxialTestConfig test;  ///< the element test (σ3 and the specimen's size serve both types)
+  MpmTriaxialConfig mpm;    ///< the MPM specimen (type mpm)
   CalibrationSettings settings;
   bool compare_modes = true;
   std::vector<double> compare_eta;
+};
+
+/// What one MPM specimen run cost and how it went (its curve is the calibration's).
+struct MpmRunRecord {
+  double eta = 0.0;
+  long steps = 0;
+  double wall_time_s = 0.0;
+  double platen_force_imbalance = 0.0;
+  double bulge_at_peak[2] = {0.0, 0.0};
+  double bulge_at_end[2] = {0.0, 0.0};
+  double work_steps_J = 0.0, work_curve_J = 0.0, work_piston_J = 0.0;
+  long wall_clamps = 0;
 };
 
 class CalibrationJob : public Job {
@@ -79,12 +122,25 @@ class CalibrationJob : public Job {
   void describe(std::ostream& out) const override {
     out << "calibration: η of the ssmc by " << to_string(spec_.settings.mode) << " on " << spec_.lab_file.string()
         << " (" << spec_.lab.axial_strain.size() << " points, ε_a to " << spec_.lab.axial_strain.back()
-        << "), η in [" << spec_.settings.eta_min << ", " << spec_.settings.eta_max << "], element test with "
-        << spec_.test.increments << " increments\n";
+        << "), η in [" << spec_.settings.eta_min << ", " << spec_.settings.eta_max << "], ";
+    if (spec_.specimen == SpecimenType::element) {
+      out << "element test with " << spec_.test.increments << " increments\n";
+    } else {
+      const MpmTriaxialConfig& m = spec_.mpm;
+      out << "MPM specimen with " << m.cell_m << " m cells (" << to_string(m.platens) << " platens at "
+          << m.platen_velocity_m_s << " m/s)\n";
+    }
   }
 
   void run(RunContext& context) override {
-    const NumericalTriaxial triaxial = element_test_triaxial(spec_.material, spec_.test);
+    const NumericalTriaxial triaxial = spec_.specimen == SpecimenType::element
+                                           ? element_test_triaxial(spec_.material, spec_.test)
+                                           : mpm_triaxial_specimen(spec_.material, spec_.mpm,
+                                                                   [this](double eta, const MpmTriaxialResult& r) {
+                                                                     record(eta, r);
+                                                                     // Ctrl-C waits for one run at most (≤ ~15 s at 0.5 cm).
+                                                                     throw_if_interrupted();
+                                                                   });
     const CalibrationResult result = calibrate(triaxial, spec_.settings);
     throw_if_interrupted();
     std::optional<CalibrationResult> second;
@@ -94,10 +150,15 @@ class CalibrationJob : public Job {
       second = calibrate(triaxial, s);
     }
     std::vector<std::pair<double, SpecimenCurve>> compared;
-    for (double eta : spec_.compare_eta) compared.emplace_back(eta, run_element_test(triaxial, eta));
-    context.steps = static_cast<long>(result.model_runs + (second ? second->model_runs : 0) +
-                                      static_cast<int>(compared.size())) *
-                    spec_.test.increments;
+    for (double eta : spec_.compare_eta) compared.emplace_back(eta, run_specimen(triaxial, eta));
+    if (spec_.specimen == SpecimenType::element) {
+      context.steps = static_cast<long>(result.model_runs + (second ? second->model_runs : 0) +
+                                        static_cast<int>(compared.size())) *
+                      spec_.test.increments;
+    } else {
+      context.steps = 0;
+      for (const MpmRunRecord& r : runs_) context.steps += r.steps;
+    }
 
     if (!result.work_decreases_with_eta)
       std::fprintf(stderr, "warning: W(η) does not decrease strictly along the scan (see work_scan.csv): "
@@ -120,15 +181,87 @@ class CalibrationJob : public Job {
     } catch (const PointIntegrationFailure& e) {
       throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): the element test failed: " +
                        e.what());
+    } catch (const mpm::StepFailure& e) {
+      throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): the MPM specimen failed: " +
+                       e.what());
     }
   }
 
-  static SpecimenCurve run_element_test(const NumericalTriaxial& triaxial, double eta) {
+  static SpecimenCurve run_specimen(const NumericalTriaxial& triaxial, double eta) {
     try {
       return triaxial(eta);
     } catch (const PointIntegrationFailure& e) {
       throw RunFailure("calibration: the element test with η = " + format(eta) + " failed: " + e.what());
+    } catch (const mpm::StepFailure& e) {
+      throw RunFailure("calibration: the MPM specimen with η = " + format(eta) + " failed: " + e.what());
     }
+  }
+
+  void record(double eta, const MpmTriaxialResult& r) {
+    MpmRunRecord k;
+    k.eta = eta;
+    k.steps = r.steps;
+    k.wall_time_s = r.wall_time_s;
+    k.platen_force_imbalance = r.platen_force_imbalance;
+    k.bulge_at_peak[0] = r.bulge_at_peak_min;
+    k.bulge_at_peak[1] = r.bulge_at_peak_max;
+    k.bulge_at_end[0] = r.bulge_at_end_min;
+    k.bulge_at_end[1] = r.bulge_at_end_max;
+    k.work_steps_J = r.work_steps_J;
+    k.work_curve_J = r.work_curve_J;
+    k.work_piston_J = r.work_piston_J;
+    k.wall_clamps = r.wall_clamps;
+    runs_.push_back(k);
+    grid_ = {r.cells_r, r.cells_z, r.cell_r_m, r.cell_z_m, r.particles, r.ramp_time_s};
+  }
+
+  json specimen_json(const CalibrationResult& r) const {
+    const TriaxialSpecimen& size = spec_.test.specimen;
+    if (spec_.specimen == SpecimenType::element)
+      return {{"type", "element"}, {"height_m", size.height_m}, {"diameter_m", size.diameter_m},
+              {"increments", spec_.test.increments}};
+    const MpmTriaxialConfig& m = spec_.mpm;
+    json s = {{"type", "mpm"},
+              {"height_m", size.height_m},
+              {"diameter_m", size.diameter_m},
+              {"cell_m", m.cell_m},
+              {"cells_r", grid_.cells_r},
+              {"cells_z", grid_.cells_z},
+              {"cell_r_m", grid_.cell_r_m},
+              {"cell_z_m", grid_.cell_z_m},
+              {"particles", grid_.particles},
+              {"platens", to_string(m.platens)},
+              {"platen_velocity_m_s", m.platen_velocity_m_s},
+              {"ramp_time_s", grid_.ramp_time_s},
+              {"shape_function", m.shape_function == mpm::ShapeFunction::gimp ? "gimp" : "linear"},
+              {"courant", m.courant},
+              {"flip_fraction", m.flip_fraction}};
+    double seconds = 0.0, slowest = 0.0;
+    long steps = 0;
+    for (const MpmRunRecord& k : runs_) {
+      seconds += k.wall_time_s;
+      slowest = std::max(slowest, k.wall_time_s);
+      steps += k.steps;
+    }
+    const double n = static_cast<double>(runs_.size());
+    s["runs"] = {{"count", runs_.size()},
+                 {"steps", steps},
+                 {"wall_time_s", seconds},
+                 {"seconds_per_run", seconds / n},
+                 {"slowest_run_s", slowest}};
+    // The fitted η's run: the calibration evaluates it last before the comparisons.
+    const auto fitted = std::find_if(runs_.rbegin(), runs_.rend(), [&](const MpmRunRecord& k) { return k.eta == r.eta; });
+    if (fitted != runs_.rend())
+      s["fitted_run"] = {{"steps", fitted->steps},
+                         {"wall_time_s", fitted->wall_time_s},
+                         {"platen_force_imbalance", fitted->platen_force_imbalance},
+                         {"bulge_at_peak", {fitted->bulge_at_peak[0], fitted->bulge_at_peak[1]}},
+                         {"bulge_at_end", {fitted->bulge_at_end[0], fitted->bulge_at_end[1]}},
+                         {"work_every_step_J", fitted->work_steps_J},
+                         {"work_output_curve_J", fitted->work_curve_J},
+                         {"piston_work_J", fitted->work_piston_J},
+                         {"wall_clamps", fitted->wall_clamps}};
+    return s;
   }
 
   double work_of(const SpecimenCurve& c) const {
@@ -175,7 +308,8 @@ class CalibrationJob : public Job {
                                                     spec_.lab.axial_strain.back());
     s["phi_peak_deg"] = spec_.material.friction_peak_rad / kDegree;
     s["phi_peak_from_lab_peak"] = spec_.fitted_peak_friction;
-    s["element_test_increments"] = spec_.test.increments;
+    s["specimen"] = specimen_json(r);
+    if (spec_.specimen == SpecimenType::element) s["element_test_increments"] = spec_.test.increments;
     s["lab"] = {{"file", spec_.lab_file.string()},
                 {"points", spec_.lab.axial_strain.size()},
                 {"peak_q_kPa", 1e-3 * spec_.lab.peak_q_Pa()},
@@ -301,6 +435,13 @@ class CalibrationJob : public Job {
   }
 
   CalibrationSpec spec_;
+  std::vector<MpmRunRecord> runs_;
+  struct {
+    int cells_r = 0, cells_z = 0;
+    double cell_r_m = 0.0, cell_z_m = 0.0;
+    std::size_t particles = 0;
+    double ramp_time_s = 0.0;
+  } grid_;
 };
 
 }  // namespace
@@ -322,7 +463,6 @@ std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const fs::path& sc
   spec.material = std::get<StrainSofteningParameters>(material.parameters);
 
   spec.settings.mode = mode_named(scene.choice("mode", {"dissipated_work", "curve_least_squares"}, "dissipated_work"));
-  spec.compare_modes = scene.boolean("compare_modes", true);
   spec.settings.eta_min = scene.number("eta_min", Range::positive(1e4), 0.1);
   spec.settings.eta_max = scene.number("eta_max", Range::positive(1e4), 500.0);
   if (!(spec.settings.eta_max > spec.settings.eta_min))
@@ -336,15 +476,54 @@ std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const fs::path& sc
 
   spec.test.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
   SceneReader specimen = scene.object("specimen");
+  spec.specimen = specimen.choice("type", {"element", "mpm"}, "element") == "mpm" ? SpecimenType::mpm
+                                                                                 : SpecimenType::element;
+  const bool mpm_specimen = spec.specimen == SpecimenType::mpm;
   spec.test.specimen.height_m = specimen.number("height_m", Range::positive(100.0, "m"), 0.15);
   spec.test.specimen.diameter_m = specimen.number("diameter_m", Range::positive(100.0, "m"), 0.07);
-  specimen.finish("specimen (height_m, diameter_m)");
   spec.settings.specimen = spec.test.specimen;
-  spec.test.increments = scene.integer("increments", 10, 1'000'000, 1000);
-  spec.test.strain_rate_per_s = scene.number("strain_rate_per_s", Range::positive(1e9, "1/s"), 1e-4);
   spec.test.axial_strain_max = spec.lab.axial_strain.back();  // the model covers the lab's range exactly
+  if (mpm_specimen) {
+    MpmTriaxialConfig& m = spec.mpm;
+    m.specimen = spec.test.specimen;
+    m.cell_pressure_Pa = spec.test.cell_pressure_Pa;
+    m.axial_strain_max = spec.test.axial_strain_max;
+    m.cell_m = specimen.number("cell_m", Range::positive(0.5 * m.specimen.height_m, "m (at most half the height)"), 0.01);
+    m.platen_velocity_m_s = specimen.number("platen_velocity_m_s", Range::positive(10.0, "m/s"), 0.01);
+    m.platens = specimen.choice("platens", {"rough", "smooth"}, "rough") == "rough" ? PlatenFriction::rough
+                                                                                   : PlatenFriction::smooth;
+    m.shape_function = specimen.choice("shape_function", {"gimp", "linear"}, "gimp") == "gimp"
+                           ? mpm::ShapeFunction::gimp
+                           : mpm::ShapeFunction::linear;
+    m.courant = specimen.number("courant", Range::positive(1.0), 0.9);
+    m.flip_fraction = specimen.number("flip_fraction", Range::closed(0.0, 1.0), 0.9);
+    m.particles_per_cell = specimen.integer("particles_per_cell", 1, 8, 2);
+    m.density_kg_m3 = specimen.number("density_kg_m3", Range::positive(1e5, "kg/m³"), 14.6e3 / 9.81);
+    m.output_strain_step = specimen.number(
+        "output_strain_step", Range::positive(0.5 * m.axial_strain_max, "(at most half the lab's last strain)"), 1e-3);
+    m.radial_margin = specimen.number("radial_margin", Range::positive(10.0), 0.5);
+    specimen.finish("an mpm specimen (type, height_m, diameter_m, cell_m, platen_velocity_m_s, platens, "
+                    "shape_function, courant, flip_fraction, particles_per_cell, density_kg_m3, output_strain_step, "
+                    "radial_margin)");
+    for (const char* key : {"increments", "strain_rate_per_s"})
+      if (scene.has(key))
+        scene.fail(key, "belongs to the element test; an mpm specimen (specimen.type = mpm) is resolved by its "
+                        "cell_m and time step, and strained by its platen_velocity_m_s");
+  } else {
+    specimen.finish("an element specimen (type, height_m, diameter_m; the MPM keys need \"type\": \"mpm\")");
+    spec.test.increments = scene.integer("increments", 10, 1'000'000, 1000);
+    spec.test.strain_rate_per_s = scene.number("strain_rate_per_s", Range::positive(1e9, "1/s"), 1e-4);
+  }
+  // The second fit doubles the cost: on by default only for the (cheap) element test.
+  spec.compare_modes = scene.boolean("compare_modes", !mpm_specimen);
   spec.settings.scan_points = scene.integer("scan_points", 2, 1000, 9);
   spec.settings.max_iterations = scene.integer("max_iterations", 1, 10000, 50);
+  spec.settings.derivative_step =
+      scene.number("derivative_step_ln_eta", Range::positive(0.5), mpm_specimen ? 0.1 : 1e-4);
+  spec.settings.parameter_tolerance =
+      scene.number("parameter_tolerance", Range::open(0.0, 1.0), mpm_specimen ? 1e-4 : 1e-8);
+  spec.settings.work_tolerance =
+      scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
 
   spec.fitted_peak_friction = scene.boolean("fit_peak_friction", false);
   if (spec.fitted_peak_friction) {

@@ -12,6 +12,8 @@ const std::vector<KindEntry>& registered_kinds() {
       {"integration_error", "error against run time of the constitutive integration", &make_integration_error_job},
       {"triaxial", "drained triaxial element test: q, ε_v and force–displacement (dissipated work)", &make_triaxial_job},
       {"calibration", "fit of the SSMC softening factor η to a lab triaxial curve (dissipated work)", &make_calibration_job},
+      {"ffp", "free-fall penetrometer impact on sand: axisymmetric MPM, rigid or elastic body, contact", &make_ffp_job},
+      {"cpt", "the FFP pushed at a constant velocity: quasi-static reaction profile F_0(z)", &make_cpt_job},
   };
   return kinds;
 }

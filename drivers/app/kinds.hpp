@@ -9,5 +9,7 @@ std::unique_ptr<Job> make_mpm_job(SceneReader& scene, const std::filesystem::pat
 std::unique_ptr<Job> make_integration_error_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_triaxial_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+std::unique_ptr<Job> make_ffp_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+std::unique_ptr<Job> make_cpt_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 
 }  // namespace ffp

@@ -1,0 +1,219 @@
+#include "drivers/app/ffp_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "drivers/scene/material_scene.hpp"
+
+namespace ffp {
+
+namespace {
+
+constexpr double kMaxLength_m = 100.0;
+constexpr double kMaxTime_s = 1e4;
+
+mpm::MaterialLaw law_of(const MaterialSpec& spec) {
+  return std::visit(
+      [](const auto& p) -> mpm::MaterialLaw {
+        using P = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, ElasticConstants>) {
+          return LinearElastic(p);
+        } else if constexpr (std::is_same_v<P, MohrCoulombParameters>) {
+          return MohrCoulomb(p);
+        } else {
+          return StrainSofteningMohrCoulomb(p);
+        }
+      },
+      spec.parameters);
+}
+
+/// Jaky (1944): K0 = 1 − sin φ'_p (the paper's 0.39 is 1 − sin 38°); ν/(1 − ν) for an elastic sand.
+double jaky_k0(const MaterialSpec& spec) {
+  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) return 1.0 - std::sin(mc->friction_angle_rad);
+  if (const auto* ss = std::get_if<StrainSofteningParameters>(&spec.parameters))
+    return 1.0 - std::sin(ss->friction_peak_rad);
+  const double nu = spec.elastic().poisson_ratio;
+  return nu / (1.0 - nu);
+}
+
+std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, int fallback) {
+  const auto read = r.optional_numbers(key, Range::closed(1, 8), 2, 2);
+  if (!read) return {fallback, fallback};
+  const std::vector<double>& ppc = *read;
+  if (ppc[0] != std::floor(ppc[0]) || ppc[1] != std::floor(ppc[1])) r.fail(key, "must be two whole numbers [n_r, n_z]");
+  return {static_cast<int>(ppc[0]), static_cast<int>(ppc[1])};
+}
+
+void read_soil(SceneReader& scene, mpm::FfpDescription& d) {
+  SceneReader material = scene.object("material", true);
+  const MaterialSpec spec = read_material(material, DensityRule::required);
+  d.soil.law = law_of(spec);
+  d.soil.density_kg_m3 = *spec.density_kg_m3;
+  SceneReader soil = scene.object("soil");
+  d.soil.depth_m = soil.number("depth_m", Range::positive(kMaxLength_m, "m"), 0.4);
+  d.soil.radius_m = soil.number("radius_m", Range::positive(kMaxLength_m, "m"), 0.4);
+  d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), jaky_k0(spec));
+  std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
+  std::tie(d.soil.far_ppc_r, d.soil.far_ppc_z) = particles_per_cell(soil, "particles_per_cell_far", 2);
+  d.soil.near_radius_m = soil.number("near_radius_m", Range::closed(0.0, d.soil.radius_m, "m (≤ radius_m)"), 0.15);
+  d.soil.near_depth_m =
+      soil.number("near_depth_m", Range::closed(0.0, d.soil.depth_m, "m (≤ depth_m)"), d.soil.depth_m);
+  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near, particles_per_cell_far, near_radius_m, near_depth_m)");
+}
+
+/// Returns the push velocity (cpt) or the impact velocity (ffp), + down.
+double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {
+  SceneReader f = scene.object("ffp", true);
+  mpm::PenetrometerShape& shape = d.shape;
+  shape.cone_apex_angle_rad = f.number("cone_apex_angle_deg", Range::open(0.0, 180.0, "degrees"), 60.0) * kDegree;
+  shape.base_radius_m = f.number("base_radius_m", Range::positive(kMaxLength_m, "m"), 0.04375);
+  shape.edge_radius_m =
+      f.number("edge_radius_m", Range::half_open(0.0, shape.base_radius_m, "m (< base_radius_m)"), 0.005);
+  shape.body_length_m = f.number("body_length_m", Range::non_negative(kMaxLength_m, "m"), 0.5);
+  double speed = 0.0;
+  if (kind == PenetrometerKind::cpt) {
+    for (const char* key : {"mass_kg", "impact_velocity_m_s", "deformable", "rigid_body_force", "external_force_N"})
+      if (f.has(key))
+        f.fail(key, "a cpt scene pushes a rigid penetrometer at push_velocity_m_s: it has no mass, impact or "
+                    "rigid-body force (use kind ffp)");
+    speed = f.number("push_velocity_m_s", Range::positive(100.0, "m/s (downward)"));
+    d.prescribed = true;
+    d.velocity_m_s = -speed;
+    f.finish("the ffp of a cpt scene (cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, push_velocity_m_s)");
+    return speed;
+  }
+  if (f.has("push_velocity_m_s")) f.fail("push_velocity_m_s", "a prescribed push is kind cpt; an ffp falls freely from impact_velocity_m_s");
+  d.mass_kg = f.number("mass_kg", Range::positive(1e6, "kg"));
+  speed = f.number("impact_velocity_m_s", Range::non_negative(1000.0, "m/s (downward)"));
+  d.velocity_m_s = -speed;
+  if (f.has("deformable")) {
+    for (const char* key : {"rigid_body_force", "external_force_N"})
+      if (f.has(key)) f.fail(key, "applies to a rigid penetrometer only (this one is deformable)");
+    SceneReader e = f.object("deformable");
+    mpm::DeformableFfp body;
+    body.youngs_modulus_Pa = 1e3 * e.number("E_kPa", Range::positive(1e9, "kPa"));
+    body.poisson_ratio = e.number("nu", Range::half_open(0.0, 0.5));
+    std::tie(body.ppc_r, body.ppc_z) = particles_per_cell(e, "particles_per_cell", 2);
+    e.finish("ffp.deformable (E_kPa, nu, particles_per_cell)");
+    d.deformable = body;
+  } else {
+    for (const char* key : {"E_kPa", "nu", "density_kg_m3", "particles_per_cell"})
+      if (f.has(key))
+        f.fail(key, "a rigid penetrometer has no stiffness or particles: give ffp.deformable {E_kPa, nu, "
+                    "particles_per_cell} for an elastic one");
+    d.force = f.choice("rigid_body_force", {"contact_impulse", "soil_internal_force"}, "contact_impulse") ==
+                      "contact_impulse"
+                  ? mpm::RigidBodyForce::contact_impulse
+                  : mpm::RigidBodyForce::soil_internal_force;
+    d.external_force_N = f.number("external_force_N", Range::closed(-1e9, 1e9, "N (+ up)"), 0.0);
+  }
+  f.finish("ffp (mass_kg, impact_velocity_m_s, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
+           "deformable, rigid_body_force, external_force_N)");
+  return speed;
+}
+
+void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
+  SceneReader c = scene.object("contact", true);
+  const bool rough = c.boolean("rough", false);
+  if (rough && c.has("delta_deg"))
+    c.fail("delta_deg", "give either delta_deg (Coulomb, μ = tan δ) or rough: true (no slip), not both");
+  if (!rough && !c.has("delta_deg")) c.fail("delta_deg", "is required (the FFP–soil friction angle), or give rough: true");
+  d.contact.rough = rough;
+  if (!rough) d.contact.friction = std::tan(c.number("delta_deg", Range::half_open(0.0, 90.0, "degrees")) * kDegree);
+  d.contact.velocity_scaling = c.number("velocity_scaling", Range{0.0, 1.0, true, false, ""}, 1.0);
+  d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.0);
+  c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells)");
+}
+
+void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
+  SceneReader m = scene.object("mesh");
+  mpm::FfpMesh& mesh = d.mesh;
+  mesh.min_cell_m = m.number("min_cell_m", Range::positive(1.0, "m"), 0.01);
+  const double h = mesh.min_cell_m;
+  // Sizes default to multiples of min_cell_m, so that --set mesh.min_cell_m=… refines everything.
+  mesh.max_cell_m = m.number("max_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 3.0 * h);
+  mesh.below_cell_m = m.number("below_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 2.0 * h);
+  mesh.fine_radius_m = m.number("fine_radius_m", Range::open(d.shape.base_radius_m, kMaxLength_m, "m (> ffp.base_radius_m)"),
+                                std::max(0.15, d.shape.base_radius_m + 2.0 * h));
+  mesh.band_below_m = m.number("band_below_m", Range::positive(kMaxLength_m, "m"), 0.05);
+  mesh.fine_above_m = m.number("fine_above_m", Range::positive(kMaxLength_m, "m"), 0.3);
+  mesh.air_above_m = m.number("air_above_m", Range::positive(kMaxLength_m, "m"), 0.1);
+  mesh.growth = m.number("growth", Range{1.0, 2.0, true, false, ""}, 1.2);
+  if (d.shape.base_radius_m + h > d.soil.radius_m)
+    m.fail("min_cell_m", "leaves no cell between the penetrometer and the chamber wall");
+  if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)
+    m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
+  m.finish("mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth)");
+}
+
+void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {
+  SceneReader solver = scene.object("solver");
+  mpm::SolverSettings& s = d.solver;
+  s.shape_function = solver.choice("shape_function", {"linear", "gimp"}, "gimp") == "gimp" ? mpm::ShapeFunction::gimp
+                                                                                           : mpm::ShapeFunction::linear;
+  s.transfer = solver.choice("transfer", {"musl", "usl"}, "musl") == "musl" ? mpm::Transfer::musl : mpm::Transfer::usl;
+  s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
+  s.courant = solver.number("courant", Range::positive(1.0), 0.5);
+  s.strain_smoothing = solver.boolean("strain_smoothing", true);
+  d.pic_blend = solver.choice("pic_blend", {"per_soil_step", "per_step"}, "per_soil_step") == "per_step"
+                    ? mpm::PicBlend::per_step
+                    : mpm::PicBlend::per_soil_step;
+  if (kind == PenetrometerKind::cpt) {
+    // A quasi-static push may damp the waves that an undamped explicit model keeps forever.
+    s.local_damping = solver.number("local_damping", Range::half_open(0.0, 1.0), 0.0);
+    solver.finish("solver (shape_function, transfer, flip_fraction, pic_blend, courant, strain_smoothing, local_damping)");
+  } else {
+    if (solver.has("local_damping"))
+      solver.fail("local_damping", "the FFP impact is dynamic: no artificial damping (paper section 4)");
+    solver.finish("solver (shape_function, transfer, flip_fraction, pic_blend, courant, strain_smoothing)");
+  }
+}
+
+}  // namespace
+
+FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
+  FfpScene out;
+  out.kind = kind;
+  mpm::FfpDescription& d = out.model;
+  d.gravity_m_s2 = scene.number("gravity_m_s2", Range::positive(1e3, "m/s²"), 9.81);
+  read_soil(scene, d);
+  const double speed = read_penetrometer(scene, d, kind);
+  read_contact(scene, d);
+  read_mesh(scene, d);
+  read_solver(scene, d, kind);
+
+  if (kind == PenetrometerKind::cpt) {
+    if (scene.has("end_time_s") && scene.has("end_depth_m"))
+      scene.fail("end_time_s", "give either end_depth_m or end_time_s, not both");
+    if (scene.has("end_time_s")) {
+      out.end_time_s = scene.number("end_time_s", Range::positive(kMaxTime_s, "s"));
+    } else {
+      const double depth = scene.number("end_depth_m", Range::open(0.0, d.soil.depth_m, "m (< soil.depth_m)"));
+      out.end_time_s = depth / speed;
+    }
+  } else {
+    out.end_time_s = scene.number("end_time_s", Range::positive(kMaxTime_s, "s"));
+  }
+
+  SceneReader output = scene.object("output");
+  FfpOutput& o = out.output;
+  o.history_interval_s =
+      output.number("history_interval_s", Range::positive(kMaxTime_s, "s"), std::min(2e-4, out.end_time_s / 100.0));
+  if (out.end_time_s / o.history_interval_s > 1e6) output.fail("history_interval_s", "gives more than 10^6 rows");
+  if (auto times = output.optional_numbers("field_times_s", Range::closed(0.0, out.end_time_s, "s (≤ end_time_s)"), 0, 1000)) {
+    o.field_times_s = *times;
+  } else {
+    // Fig. 9 shows t = 0.04 s and 0.06 s; a CPT (and a short run) gets its end state.
+    if (kind == PenetrometerKind::ffp)
+      for (double t : {0.04, 0.06})
+        if (t < out.end_time_s) o.field_times_s.push_back(t);
+    o.field_times_s.push_back(out.end_time_s);
+  }
+  std::sort(o.field_times_s.begin(), o.field_times_s.end());
+  o.strain_colour_max = output.number("strain_colour_max", Range::positive(100.0), 0.5);
+  output.finish("output (history_interval_s, field_times_s, strain_colour_max)");
+  scene.finish(kind == PenetrometerKind::cpt ? "a cpt scene" : "an ffp scene");
+  return out;
+}
+
+}  // namespace ffp

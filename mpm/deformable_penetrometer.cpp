@@ -1,0 +1,86 @@
+#include "mpm/deformable_penetrometer.hpp"
+
+#include "mpm/diagnostics.hpp"
+
+namespace ffp::mpm {
+
+DeformablePenetrometer::DeformablePenetrometer(const Simulation& s, const DeformablePenetrometerSettings& settings)
+    : settings_(settings), geometry_(settings.shape), tip_z0_(settings.tip_z_m) {
+  if (settings.body >= s.bodies.size()) throw std::invalid_argument("deformable penetrometer: no such body");
+  if (settings.soil_field == settings.penetrometer_field)
+    throw std::invalid_argument("deformable penetrometer: soil and penetrometer need separate nodal fields");
+  const Diagnostics d = measure_body(s, settings.body);
+  mass_kg_ = d.mass_kg;
+  z_cm0_ = d.mass_z_kg_m / d.mass_kg;
+  state_.velocity_m_s = d.momentum_z_N_s / d.mass_kg;
+}
+
+void DeformablePenetrometer::attach(Simulation& s) {
+  s.stages.insert_before("update_particles", {"apply_two_body_contact", [this](Simulation& sim) { apply_contact(sim); }});
+  if (s.stages.contains("map_velocities_to_grid"))
+    s.stages.insert_before("compute_strain_increments",
+                           {"apply_two_body_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
+  const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
+  s.stages.insert_before(last, {"follow_deformable_penetrometer", [this](Simulation& sim) { follow(sim); }});
+}
+
+double DeformablePenetrometer::correct(Simulation& s, std::vector<double> NodalField::*vr,
+                                       std::vector<double> NodalField::*vz, std::size_t* corrected) {
+  NodalField& soil = s.grid.fields[settings_.soil_field];
+  NodalField& body = s.grid.fields[settings_.penetrometer_field];
+  std::vector<double>&svr = soil.*vr, &svz = soil.*vz, &bvr = body.*vr, &bvz = body.*vz;
+  double impulse = 0.0;
+  std::size_t count = 0;
+  for (const ContactNode& c : nodes_) {
+    const std::size_t k = c.node;
+    const double ms = soil.mass[k], mf = body.mass[k];
+    const Vector2 vs{svr[k], svz[k]}, vf{bvr[k], bvz[k]};
+    const Vector2 cm{(ms * vs.r + mf * vf.r) / (ms + mf), (ms * vs.z + mf * vf.z) / (ms + mf)};
+    const Vector2 after = contact_velocity(vs, cm, c.normal, settings_.contact);
+    const double dr = after.r - vs.r, dz = after.z - vs.z;
+    if (dr == 0.0 && dz == 0.0) continue;
+    ++count;
+    svr[k] = after.r;
+    svz[k] = after.z;
+    bvr[k] = vf.r - ms / mf * dr;
+    bvz[k] = vf.z - ms / mf * dz;
+    impulse += ms * dz;
+  }
+  if (corrected != nullptr) *corrected = count;
+  return impulse;
+}
+
+void DeformablePenetrometer::apply_contact(Simulation& s) {
+  nodes_.clear();
+  const NodalField& soil = s.grid.fields[settings_.soil_field];
+  const NodalField& body = s.grid.fields[settings_.penetrometer_field];
+  const double floor = s.mass_floor_kg;
+  const double tip = tip_z_m();
+  const double reach = settings_.detection_distance_m + 1e-9 * s.grid.min_spacing();  // nodes on the outline count
+  for (int j = 0; j < s.grid.z.nodes(); ++j) {
+    for (int i = 0; i < s.grid.r.nodes(); ++i) {
+      const std::size_t k = s.grid.node(i, j);
+      if (!(soil.mass[k] > floor && body.mass[k] > floor)) continue;
+      double distance = 0.0;
+      const Vector2 n = contact_normal(geometry_, s.grid.r.coordinate(i), s.grid.z.coordinate(j), tip, &distance);
+      if (distance <= reach) nodes_.push_back({k, n});
+    }
+  }
+  std::size_t corrected = 0;
+  const double impulse = correct(s, &NodalField::velocity_new_r, &NodalField::velocity_new_z, &corrected);
+  state_.reaction_N = -kTwoPi * impulse / s.dt_s;
+  state_.impulse_N_s += state_.reaction_N * s.dt_s;
+  state_.contact_nodes = corrected;
+}
+
+void DeformablePenetrometer::apply_contact_remapped(Simulation& s) {
+  correct(s, &NodalField::velocity_r, &NodalField::velocity_z, nullptr);
+}
+
+void DeformablePenetrometer::follow(const Simulation& s) {
+  const Diagnostics d = measure_body(s, settings_.body);
+  state_.displacement_m = d.mass_z_kg_m / d.mass_kg - z_cm0_;
+  state_.velocity_m_s = d.momentum_z_N_s / d.mass_kg;
+}
+
+}  // namespace ffp::mpm

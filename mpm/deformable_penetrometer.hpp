@@ -1,0 +1,72 @@
+#pragma once
+/// The deformable alternative of the paper's section 5.1 (Fig. 7): the
+/// penetrometer is a body of particles (linear elastic) with its own nodal
+/// velocity field, in contact with the soil's field by the two-body form of
+/// Bardenhagen et al. (2000): at nodes where both fields have mass and that lie
+/// inside the outline or within the detection distance of it (the rigid body's
+/// rule, so that both models meet the soil on the same surface),
+///   v_cm = (m_s v*_s + m_f v*_f)/(m_s + m_f),
+///   v_s  = contact law of v*_s against a surface moving at v_cm,
+///   v_f  = v*_f − (m_s/m_f)(v_s − v*_s)     (momentum is conserved node by node).
+/// The normal is the exact outline's, placed at the body's centre-of-mass
+/// displacement (the outline moves with the body; its elastic deformation is
+/// small). Its p-wave speed enters the time step like any material's.
+#include <cstdint>
+#include <vector>
+
+#include "mpm/contact_law.hpp"
+#include "mpm/penetrometer_geometry.hpp"
+#include "mpm/penetrometer_state.hpp"
+#include "mpm/simulation.hpp"
+
+namespace ffp::mpm {
+
+struct DeformablePenetrometerSettings {
+  PenetrometerShape shape;
+  double tip_z_m = 0.0;       ///< initial tip height
+  std::size_t body = 1;       ///< the penetrometer's body in the simulation
+  std::uint8_t soil_field = 0, penetrometer_field = 1;
+  ContactLaw contact;
+  /// Shared nodes with signed distance ≤ this take part (0: inside or on the
+  /// outline; a few cells: every node both bodies' supports reach, the classical rule).
+  double detection_distance_m = 0.0;
+};
+
+class DeformablePenetrometer {
+ public:
+  /// Reads the body's initial centre of mass and velocity from the simulation.
+  DeformablePenetrometer(const Simulation& simulation, const DeformablePenetrometerSettings& settings);
+  DeformablePenetrometer(const DeformablePenetrometer&) = delete;
+  DeformablePenetrometer& operator=(const DeformablePenetrometer&) = delete;
+
+  /// Insert apply_two_body_contact (after the grid update and fixities),
+  /// apply_two_body_contact_remapped (MUSL) and follow_deformable_penetrometer
+  /// (centre of mass, before the time-step update). Keeps a pointer to this.
+  void attach(Simulation& simulation);
+
+  void apply_contact(Simulation& simulation);
+  void apply_contact_remapped(Simulation& simulation);
+  /// Centre-of-mass displacement and velocity of the body's particles.
+  void follow(const Simulation& simulation);
+
+  const PenetrometerState& state() const { return state_; }
+  /// Where the outline's tip is taken to be: initial tip + centre-of-mass displacement.
+  double tip_z_m() const { return tip_z0_ + state_.displacement_m; }
+  const PenetrometerGeometry& geometry() const { return geometry_; }
+  double mass_kg() const { return mass_kg_; }
+
+ private:
+  /// Corrects both fields' velocities (the arrays `vr`, `vz`) at shared nodes;
+  /// returns Σ m_s (v_s − v*_s)_z per radian and counts corrected nodes.
+  double correct(Simulation& simulation, std::vector<double> NodalField::*vr, std::vector<double> NodalField::*vz,
+                 std::size_t* corrected);
+
+  DeformablePenetrometerSettings settings_;
+  PenetrometerGeometry geometry_;
+  double tip_z0_;
+  double mass_kg_ = 0.0, z_cm0_ = 0.0;
+  PenetrometerState state_;
+  std::vector<ContactNode> nodes_;
+};
+
+}  // namespace ffp::mpm

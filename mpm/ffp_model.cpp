@@ -1,0 +1,212 @@
+#include "mpm/ffp_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "mpm/diagnostics.hpp"
+
+namespace ffp::mpm {
+
+namespace {
+
+/// n equal cells over [a, b] appended after a (a itself is already there).
+void append_uniform(std::vector<double>& x, double b, int n) {
+  const double a = x.back();
+  for (int k = 1; k < n; ++k) x.push_back(a + (b - a) * k / n);
+  x.push_back(b);
+}
+
+/// Cells growing from `first` by `growth` per cell up to `largest`, ending
+/// exactly at b: of the two counts around the length, the one whose sizes need
+/// the smaller scaling to fit, unless shrinking would make the first cell
+/// smaller than `floor` (the neighbouring fine cell).
+void append_graded(std::vector<double>& x, double b, double first, double largest, double growth, double floor) {
+  const double a = x.back(), length = b - a;
+  if (!(length > 0.0)) return;
+  std::vector<double> sizes;
+  double total = 0.0, size = std::min(first, largest);
+  while (total < length) {
+    sizes.push_back(size);
+    total += size;
+    size = std::min(largest, size * growth);
+  }
+  const double shorter = total - sizes.back();
+  const bool shrink_ok = sizes.front() * length / total >= floor;
+  if (sizes.size() > 1 && (!shrink_ok || total - length > length - shorter)) {
+    total = shorter;
+    sizes.pop_back();
+  }
+  const double scale = length / total;
+  double at = a;
+  for (std::size_t k = 0; k + 1 < sizes.size(); ++k) {
+    at += sizes[k] * scale;
+    x.push_back(at);
+  }
+  x.push_back(b);
+}
+
+int cells_in(double length, double cell) { return std::max(1, static_cast<int>(std::floor(length / cell + 1e-9))); }
+
+}  // namespace
+
+FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
+  const FfpMesh& m = d.mesh;
+  const double h = m.min_cell_m, R = d.shape.base_radius_m;
+  auto need = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument(what);
+  };
+  need(h > 0.0 && m.max_cell_m >= h && m.below_cell_m >= h, "mesh: need 0 < min_cell ≤ below_cell and ≤ max_cell");
+  need(m.growth > 1.0 && m.growth <= 2.0, "mesh: growth must be in (1, 2]");
+  need(R > 0.0 && R + h <= d.soil.radius_m, "the penetrometer's base radius plus a cell must fit inside the chamber");
+  need(m.fine_radius_m > R, "mesh: fine_radius must exceed the penetrometer's base radius");
+  need(m.band_below_m > 0.0 && m.band_below_m + 2.0 * h < d.soil.depth_m,
+       "mesh: band_below must leave at least two cells of sand below the band");
+  need(m.fine_above_m > 0.0 && m.air_above_m > 0.0, "mesh: fine_above and air_above must be > 0");
+  need(d.shape.total_length_m() >= 3.0 * h, "the penetrometer must be at least three min cells long");
+
+  FfpGridLayout g;
+  // Radial: uniform cells no smaller than h on [0, R] and [R, fine], a node exactly at R.
+  g.r_nodes_m = {0.0};
+  append_uniform(g.r_nodes_m, R, cells_in(R, h));
+  double fine = std::min(m.fine_radius_m, d.soil.radius_m);
+  if (d.soil.radius_m - fine < 2.0 * h) fine = d.soil.radius_m;  // no sliver of graded cells
+  const int n_fine = cells_in(fine - R, h);
+  append_uniform(g.r_nodes_m, fine, n_fine);
+  const double fine_cell = (fine - R) / n_fine;
+  append_graded(g.r_nodes_m, d.soil.radius_m, fine_cell * m.growth, std::max(m.max_cell_m, fine_cell), m.growth,
+                fine_cell);
+
+  // Vertical, bottom to top: compressing zone, fine band (below and above the
+  // tip), graded band along the body up to its top plus a cell, stretching air.
+  const int n_below = std::max(1, static_cast<int>(std::lround(m.band_below_m / h)));
+  const double band_bottom = -n_below * h;
+  g.z_nodes_m = {-d.soil.depth_m};
+  const double compress = d.soil.depth_m + band_bottom;
+  append_uniform(g.z_nodes_m, band_bottom, std::max(2, static_cast<int>(std::lround(compress / m.below_cell_m))));
+  g.band_first = static_cast<int>(g.z_nodes_m.size()) - 1;
+  const double top = d.shape.total_length_m();
+  // Fine cells above the tip, leaving at least one cell's height below the body's top (no sliver cell).
+  const int n_above = std::clamp(static_cast<int>(std::lround(m.fine_above_m / h)), 1, std::max(1, cells_in(top, h) - 1));
+  append_uniform(g.z_nodes_m, n_above * h, n_above + n_below);
+  append_graded(g.z_nodes_m, top, h * m.growth, m.max_cell_m, m.growth, h);
+  const double last_cell = g.z_nodes_m.back() - g.z_nodes_m[g.z_nodes_m.size() - 2];
+  g.z_nodes_m.push_back(g.z_nodes_m.back() + last_cell);
+  g.band_last = static_cast<int>(g.z_nodes_m.size()) - 1;
+  append_uniform(g.z_nodes_m, g.z_nodes_m.back() + m.air_above_m,
+                 std::max(2, static_cast<int>(std::lround(m.air_above_m / m.max_cell_m))));
+  return g;
+}
+
+namespace {
+
+ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, const PenetrometerGeometry& geometry) {
+  ModelDescription m;
+  m.r_nodes_m = g.r_nodes_m;
+  m.z_nodes_m = g.z_nodes_m;
+  m.gravity_m_s2 = d.gravity_m_s2;
+  m.solver = d.solver;
+  // Paper Fig. 4b: lateral wall on rollers, bottom and top fixed (the top is in the air).
+  m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::fixed};
+  const FfpSoil& s = d.soil;
+  if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
+    throw std::invalid_argument("particles per cell must be ≥ 1");
+  m.bodies.push_back(BodyDescription{"soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0},
+                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0, GeostaticStress{s.k0, 0.0}});
+  const double h = d.mesh.min_cell_m;
+  m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, h / s.near_ppc_r,
+                                        h / s.near_ppc_z});
+  if (d.deformable) {
+    const DeformableFfp& f = *d.deformable;
+    // The density is fixed below so that the particles carry exactly the given mass.
+    const double density = d.mass_kg / d.shape.volume_m3();
+    m.bodies.push_back(BodyDescription{"penetrometer",
+                                       LinearElastic(ElasticConstants{f.youngs_modulus_Pa, f.poisson_ratio}),
+                                       density,
+                                       ShapeRegion{[geometry](double r, double z) { return geometry.contains(r, z, 0.0); }},
+                                       f.ppc_r,
+                                       f.ppc_z,
+                                       0.0,
+                                       d.velocity_m_s,
+                                       std::nullopt});
+  }
+  return m;
+}
+
+}  // namespace
+
+FfpRun::FfpRun(const FfpDescription& d)
+    : description_(d),
+      geometry_(d.shape),
+      layout_(ffp_grid_layout(d)),
+      mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last),
+      simulation_(build_model(d, layout_, geometry_)) {
+  Simulation& s = simulation_;
+  if (d.deformable) {
+    if (d.prescribed) throw std::invalid_argument("a prescribed (CPT) penetrometer is rigid");
+    // Own nodal field for the penetrometer (two-body contact), and the exact mass.
+    s.grid.fields.resize(2);
+    s.grid.fields[1].resize(s.grid.nodes());
+    s.bodies[1].field = 1;
+    MaterialGroup& group = s.groups[1];
+    double sampled = 0.0;
+    for (std::size_t p = group.begin; p < group.end; ++p) sampled += kTwoPi * s.particles.mass[p];
+    const double scale = d.mass_kg / sampled;
+    for (std::size_t p = group.begin; p < group.end; ++p) s.particles.mass[p] *= scale;
+    group.density_kg_m3 *= scale;
+    s.dt_limit_s = cfl_time_step_limit(s);
+    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
+    DeformablePenetrometerSettings settings;
+    settings.shape = d.shape;
+    settings.tip_z_m = 0.0;
+    settings.body = 1;
+    settings.contact = d.contact;
+    settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
+    deformable_ = std::make_unique<DeformablePenetrometer>(s, settings);
+    deformable_->attach(s);
+  } else {
+    RigidPenetrometerSettings settings;
+    settings.shape = d.shape;
+    settings.mass_kg = d.mass_kg;
+    settings.tip_z_m = 0.0;
+    settings.velocity_m_s = d.velocity_m_s;
+    settings.motion = d.prescribed ? RigidMotion::prescribed : RigidMotion::free;
+    settings.force = d.force;
+    settings.external_force_N = d.external_force_N;
+    settings.contact = d.contact;
+    settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
+    rigid_ = std::make_unique<RigidPenetrometer>(settings);
+    rigid_->attach(s);
+  }
+  const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
+  s.stages.insert_before(last, {"move_mesh", [this](Simulation& sim) { mesh_.apply(sim.grid, state().displacement_m); }});
+
+  const MaterialGroup& soil = s.groups[0];
+  const double c_p = std::sqrt(soil.constrained_modulus() / soil.density_kg_m3);
+  // At the project's standard Courant number 0.5, so that the damping per unit time does not
+  // follow the Courant number either.
+  soil_dt_s_ = 0.5 * s.grid.min_spacing() / (c_p + std::abs(d.velocity_m_s));
+  if (d.pic_blend == PicBlend::per_soil_step && s.settings.flip_fraction < 1.0) {
+    const double pic = 1.0 - s.settings.flip_fraction;
+    s.stages.insert_before("update_particles", {"scale_pic_blend", [this, pic](Simulation& sim) {
+                                                  sim.settings.flip_fraction =
+                                                      1.0 - pic * std::min(1.0, sim.dt_s / soil_dt_s_);
+                                                }});
+  }
+}
+
+double FfpRun::soil_intrusion_m() const {
+  const Simulation& s = simulation_;
+  const Particles& P = s.particles;
+  const MaterialGroup& soil = s.groups[0];
+  const double tip = tip_z_m(), R = description_.shape.base_radius_m, top = tip + description_.shape.total_length_m();
+  double deepest = 0.0;
+  for (std::size_t p = soil.begin; p < soil.end; ++p) {
+    if (P.r[p] >= R || P.z[p] <= tip || P.z[p] >= top) continue;  // outside the outline's bounding box
+    deepest = std::max(deepest, -geometry_.query(P.r[p], P.z[p], tip).signed_distance_m);
+  }
+  return deepest;
+}
+
+}  // namespace ffp::mpm

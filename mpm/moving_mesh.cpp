@@ -1,0 +1,45 @@
+#include "mpm/moving_mesh.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "mpm/simulation.hpp"
+
+namespace ffp::mpm {
+
+MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_last)
+    : z0_(std::move(z_nodes)), band_first_(band_first), band_last_(band_last) {
+  const int last = static_cast<int>(z0_.size()) - 1;
+  if (!(band_first > 0 && band_first < band_last && band_last < last))
+    throw std::invalid_argument("moving mesh: the band must leave at least one cell below and above it");
+}
+
+std::vector<double> MovingMesh::coordinates(double u) const {
+  const std::size_t n = z0_.size();
+  const auto lo = static_cast<std::size_t>(band_first_), hi = static_cast<std::size_t>(band_last_);
+  const double bottom = z0_.front(), top = z0_.back();
+  // Compressing zone [bottom, band bottom] and stretching zone [band top, top]:
+  // each node keeps its relative position in its zone.
+  const double below = (z0_[lo] + u - bottom) / (z0_[lo] - bottom);
+  const double above = (top - (z0_[hi] + u)) / (top - z0_[hi]);
+  if (!(below > 0.05) || !(above > 0.05))
+    throw StepFailure("moving mesh: the penetrometer's band came within 5 % of the grid's " +
+                      std::string(below <= 0.05 ? "bottom" : "top") + " (displacement " + std::to_string(u) + " m)");
+  std::vector<double> z(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j <= lo) {
+      z[j] = bottom + (z0_[j] - bottom) * below;
+    } else if (j < hi) {
+      z[j] = z0_[j] + u;
+    } else {
+      z[j] = top - (top - z0_[j]) * above;
+    }
+  }
+  z.front() = bottom;  // the fixed ends stay exactly where they are
+  z.back() = top;
+  return z;
+}
+
+void MovingMesh::apply(Grid& grid, double u) const { grid.z.set_coordinates(coordinates(u)); }
+
+}  // namespace ffp::mpm

@@ -1,0 +1,38 @@
+#pragma once
+/// What a penetrometer model (rigid or deformable) reports after each step,
+/// and the contact normal it uses at a grid node.
+#include <cstddef>
+
+#include "mpm/contact_law.hpp"
+#include "mpm/penetrometer_geometry.hpp"
+
+namespace ffp::mpm {
+
+/// Full body (not per radian), SI, z up.
+struct PenetrometerState {
+  double displacement_m = 0.0;    ///< of the tip (rigid) or of the centre of mass (deformable) since t = 0
+  double velocity_m_s = 0.0;      ///< vertical velocity at the end of the last step
+  double reaction_N = 0.0;        ///< vertical force of the soil on the penetrometer over the last step
+  double impulse_N_s = 0.0;       ///< Σ reaction·Δt over all steps (exact, not sampled)
+  std::size_t contact_nodes = 0;  ///< nodes where the soil's velocity was corrected in the last step
+};
+
+/// A node shared by soil and penetrometer, with the outline's outward normal there.
+struct ContactNode {
+  std::size_t node = 0;
+  Vector2 normal;
+};
+
+/// The outline's unit outward normal at the point closest to node (r, z). On
+/// the axis the azimuthal average of the normals is what a ring of zero radius
+/// sees, so only the vertical part survives (the apex of the cone pushes
+/// straight down, not along one flank).
+inline Vector2 contact_normal(const PenetrometerGeometry& geometry, double r_m, double z_m, double tip_z_m,
+                              double* signed_distance_m = nullptr) {
+  const SurfaceQuery q = geometry.query(r_m, z_m, tip_z_m);
+  if (signed_distance_m != nullptr) *signed_distance_m = q.signed_distance_m;
+  if (r_m <= 0.0) return {0.0, q.normal_z >= 0.0 ? 1.0 : -1.0};
+  return {q.normal_r, q.normal_z};
+}
+
+}  // namespace ffp::mpm

@@ -1,0 +1,164 @@
+#include "mpm/rigid_penetrometer.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "mpm/diagnostics.hpp"
+
+namespace ffp::mpm {
+
+RigidPenetrometer::RigidPenetrometer(const RigidPenetrometerSettings& settings)
+    : settings_(settings), geometry_(settings.shape), tip_z0_(settings.tip_z_m), tip_z_(settings.tip_z_m) {
+  if (settings.motion == RigidMotion::free && !(settings.mass_kg > 0.0))
+    throw std::invalid_argument("a free rigid penetrometer needs a mass > 0");
+  if (!(settings.detection_distance_m >= 0.0)) throw std::invalid_argument("detection distance must be ≥ 0");
+  state_.velocity_m_s = settings.velocity_m_s;
+}
+
+void RigidPenetrometer::attach(Simulation& s) {
+  // After the fixities, so that the contact law sees v_r = 0 on the axis (and keeps it).
+  s.stages.insert_before("update_particles", {"apply_rigid_contact", [this](Simulation& sim) { apply_contact(sim); }});
+  if (s.stages.contains("map_velocities_to_grid"))
+    s.stages.insert_before("compute_strain_increments",
+                           {"apply_rigid_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
+  const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
+  s.stages.insert_before(last, {"move_rigid_penetrometer", [this](Simulation& sim) { move(sim); }});
+}
+
+void RigidPenetrometer::find_nodes(const Simulation& s) {
+  nodes_.clear();
+  soil_star_.clear();
+  const NodalField& f = s.grid.fields[settings_.soil_field];
+  const double reach = settings_.detection_distance_m + 1e-9 * s.grid.min_spacing();  // nodes exactly on the outline count
+  const double r_max = settings_.shape.base_radius_m + reach;
+  const double z_lo = tip_z_ - reach, z_hi = tip_z_ + settings_.shape.total_length_m() + reach;
+  for (int i = 0; i < s.grid.r.nodes(); ++i) {
+    const double r = s.grid.r.coordinate(i);
+    if (r > r_max) break;
+    for (int j = 0; j < s.grid.z.nodes(); ++j) {
+      const double z = s.grid.z.coordinate(j);
+      if (z < z_lo || z > z_hi) continue;
+      const std::size_t k = s.grid.node(i, j);
+      if (!(f.mass[k] > s.mass_floor_kg)) continue;
+      double distance = 0.0;
+      const Vector2 n = contact_normal(geometry_, r, z, tip_z_, &distance);
+      if (distance > reach) continue;
+      nodes_.push_back({k, n});
+      soil_star_.push_back({f.velocity_new_r[k], f.velocity_new_z[k]});
+    }
+  }
+}
+
+double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) const {
+  NodalField& f = s.grid.fields[settings_.soil_field];
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t c = 0; c < nodes_.size(); ++c) {
+    const std::size_t k = nodes_[c].node;
+    const Vector2 before = soil_star_[c];
+    const Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact);
+    sum += f.mass[k] * (after.z - before.z);
+    if (after.r != before.r || after.z != before.z) ++count;
+    if (write) {
+      f.velocity_new_r[k] = after.r;
+      f.velocity_new_z[k] = after.z;
+    }
+  }
+  if (corrected != nullptr) *corrected = count;
+  return sum;
+}
+
+double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) const {
+  const double M = settings_.mass_kg / kTwoPi;  // per radian, as the nodal masses
+  auto residual = [&](double v) { return M * (v - v_free) + soil_impulse(s, v, false, nullptr); };
+  double f_free = residual(v_free);
+  if (f_free == 0.0) return v_free;
+  // Bracket: the root is within |F(v_free)|/M' of v_free unless the soil's
+  // share of the slope is large; widen until the sign changes.
+  double lo = v_free, hi = v_free, f_lo = f_free, f_hi = f_free;
+  double step = 2.0 * std::abs(f_free) / M + 1e-12 * (1.0 + std::abs(v_free));
+  for (int k = 0; k < 200 && (f_lo > 0.0) == (f_hi > 0.0); ++k, step *= 2.0) {
+    if (f_free < 0.0) {
+      lo = hi;
+      f_lo = f_hi;
+      hi = v_free + step;
+      f_hi = residual(hi);
+    } else {
+      hi = lo;
+      f_hi = f_lo;
+      lo = v_free - step;
+      f_lo = residual(lo);
+    }
+  }
+  if ((f_lo > 0.0) == (f_hi > 0.0))
+    throw StepFailure("rigid penetrometer: no bracket for the contact velocity at t = " + std::to_string(s.time_s) + " s");
+  // Illinois regula falsi: exact on each linear piece of the residual, and never leaves the bracket.
+  int side = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double v = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+    const double f_v = residual(v);
+    if (f_v == 0.0 || hi - lo <= 1e-15 * (1.0 + std::abs(v))) return v;
+    if ((f_v > 0.0) == (f_hi > 0.0)) {
+      hi = v;
+      f_hi = f_v;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    } else {
+      lo = v;
+      f_lo = f_v;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    }
+  }
+  return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+}
+
+void RigidPenetrometer::apply_contact(Simulation& s) {
+  find_nodes(s);
+  const double dt = s.dt_s;
+  const double g = s.gravity_m_s2.value_or(0.0);
+  const double v0 = state_.velocity_m_s;
+  const double M = settings_.mass_kg;
+  double v = v0;
+  double reaction = 0.0;
+  std::size_t corrected = 0;
+  if (settings_.motion == RigidMotion::prescribed) {
+    v = settings_.velocity_m_s;
+    reaction = -kTwoPi * soil_impulse(s, v, true, &corrected) / dt;
+  } else if (settings_.force == RigidBodyForce::contact_impulse) {
+    const double v_free = v0 + dt * (-g + settings_.external_force_N / M);
+    v = solve_free_velocity(s, v_free);
+    const double impulse = soil_impulse(s, v, true, &corrected);  // per radian, exactly what the soil received
+    reaction = -kTwoPi * impulse / dt;
+    v = v_free + dt * reaction / M;  // the same impulse taken from the body (v equals the root to round-off)
+  } else {
+    // Eq. 1 verbatim: f_soil^i is the soil's nodal internal force at the contact nodes.
+    const NodalField& f = s.grid.fields[settings_.soil_field];
+    double sum = 0.0;
+    for (const ContactNode& c : nodes_) sum += f.internal_force_z[c.node];
+    reaction = kTwoPi * sum;
+    v = v0 + dt * (-g + (reaction + settings_.external_force_N) / M);  // eqs. 1 and 3
+    soil_impulse(s, v, true, &corrected);
+  }
+  state_.velocity_m_s = v;
+  state_.reaction_N = reaction;
+  state_.impulse_N_s += reaction * dt;
+  state_.contact_nodes = corrected;
+}
+
+void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
+  NodalField& f = s.grid.fields[settings_.soil_field];
+  const Vector2 body{0.0, state_.velocity_m_s};
+  for (const ContactNode& c : nodes_) {
+    const Vector2 after = contact_velocity({f.velocity_r[c.node], f.velocity_z[c.node]}, body, c.normal, settings_.contact);
+    f.velocity_r[c.node] = after.r;
+    f.velocity_z[c.node] = after.z;
+  }
+}
+
+void RigidPenetrometer::move(const Simulation& s) {
+  tip_z_ += s.dt_s * state_.velocity_m_s;
+  state_.displacement_m = tip_z_ - tip_z0_;
+}
+
+}  // namespace ffp::mpm

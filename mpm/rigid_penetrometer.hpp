@@ -1,0 +1,101 @@
+#pragma once
+/// The rigid penetrometer of the paper's section 4.1: no particles and no
+/// constitutive update, only its exact outline, its mass and one vertical
+/// velocity. It is coupled to the soil at the grid nodes it covers by the
+/// frictional contact law (mpm/contact_law.hpp), and it does not limit the
+/// time step.
+///
+/// Rigid-body force (paper eqs. 1–3). Two variants:
+/// - contact_impulse (default): the impulse the soil receives at the contact
+///   nodes is exactly the impulse the penetrometer loses. The new velocity v
+///   solves the scalar equation
+///       M'(v − v_free) + Σ_i m_i (v_s,i(v) − v*_s,i)_z = 0,
+///   v_free = v_n + Δt(−g + t/M), M' = M/2π (per radian like the nodal masses),
+///   v*_s,i the soil's nodal velocity after its own forces and v_s,i(v) the
+///   velocity the contact law gives it against a body moving at v. The left
+///   side is strictly increasing in v (its slope is at least M' − μΣm_i/2 > 0),
+///   so a bracketed regula falsi finds the root to round-off. The reaction is
+///   R = −2π Σ_i m_i (v_s,i − v*_s,i)_z / Δt, and a_rb = (−Mg + t + R)/M is eq. 1
+///   with the soil's force measured by the momentum it exchanges.
+/// - soil_internal_force: eq. 1 as printed: R = 2π Σ_i f^int_soil,z,i over the
+///   contact nodes, a_rb = −g + (R + t)/M, v = v_n + a_rb Δt (eq. 3), then the
+///   contact law against v. The soil then does not receive exactly −R·Δt (the
+///   inertia of the soil mass at the contact nodes is missed).
+/// In both, the velocity is prescribed to every penetrometer node (eq. 2–3) by
+/// using it as the contact law's surface velocity, before the soil's particles
+/// are updated (Fig. 5).
+#include <cstdint>
+#include <vector>
+
+#include "mpm/contact_law.hpp"
+#include "mpm/penetrometer_geometry.hpp"
+#include "mpm/penetrometer_state.hpp"
+#include "mpm/simulation.hpp"
+
+namespace ffp::mpm {
+
+enum class RigidMotion : std::uint8_t {
+  free,        ///< driven by gravity, the external load and the soil (FFP)
+  prescribed,  ///< constant velocity (CPT-like push, a fixed floor)
+};
+
+enum class RigidBodyForce : std::uint8_t { contact_impulse, soil_internal_force };
+
+struct RigidPenetrometerSettings {
+  PenetrometerShape shape;
+  double mass_kg = 0.0;             ///< whole body (unused for a prescribed motion)
+  double tip_z_m = 0.0;             ///< initial tip height
+  double velocity_m_s = 0.0;        ///< initial (free) or prescribed vertical velocity, + up
+  RigidMotion motion = RigidMotion::free;
+  RigidBodyForce force = RigidBodyForce::contact_impulse;
+  double external_force_N = 0.0;    ///< t_rb of eq. 1, vertical, + up
+  ContactLaw contact;
+  /// Nodes with signed distance ≤ this are penetrometer nodes (0: inside or on the outline).
+  double detection_distance_m = 0.0;
+  std::uint8_t soil_field = 0;
+};
+
+class RigidPenetrometer {
+ public:
+  explicit RigidPenetrometer(const RigidPenetrometerSettings& settings);
+  RigidPenetrometer(const RigidPenetrometer&) = delete;
+  RigidPenetrometer& operator=(const RigidPenetrometer&) = delete;
+
+  /// Insert the stages into the simulation's step: apply_rigid_contact after
+  /// the grid update and its fixities, apply_rigid_contact_remapped after the
+  /// MUSL remap and its fixities, move_rigid_penetrometer before the time-step update. The stages
+  /// keep a pointer to this object: it must outlive the simulation's use.
+  void attach(Simulation& simulation);
+
+  /// Lagrangian phase: contact nodes, the rigid velocity, the soil's corrected velocity.
+  void apply_contact(Simulation& simulation);
+  /// MUSL: the same law on the soil's remapped velocities (strain rates see the contact).
+  void apply_contact_remapped(Simulation& simulation);
+  /// x_tip ← x_tip + Δt·v (the particles' update rule).
+  void move(const Simulation& simulation);
+
+  /// A prescribed body's velocity from the next step on (e.g. to hold it still).
+  void set_prescribed_velocity(double velocity_m_s) { settings_.velocity_m_s = velocity_m_s; }
+
+  const PenetrometerState& state() const { return state_; }
+  double tip_z_m() const { return tip_z_; }
+  const PenetrometerGeometry& geometry() const { return geometry_; }
+  const RigidPenetrometerSettings& settings() const { return settings_; }
+  /// Penetrometer nodes holding soil mass in the last step, with their normals.
+  const std::vector<ContactNode>& nodes() const { return nodes_; }
+
+ private:
+  void find_nodes(const Simulation& simulation);
+  /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v).
+  double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected) const;
+  double solve_free_velocity(Simulation& simulation, double v_free) const;
+
+  RigidPenetrometerSettings settings_;
+  PenetrometerGeometry geometry_;
+  double tip_z0_, tip_z_;
+  PenetrometerState state_;
+  std::vector<ContactNode> nodes_;
+  std::vector<Vector2> soil_star_;  ///< v*_s at the nodes, before contact
+};
+
+}  // namespace ffp::mpm

@@ -1,0 +1,116 @@
+/// The checks on what the `ffp` program writes (history.csv,
+/// summary.json) for the reference scene on a coarse (2 cm) mesh: impulse and
+/// momentum, the weight carried at rest, no deep intrusion; and the CPT's push
+/// speed. Each run takes a second or a few.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "ffp_test_support.hpp"
+
+using namespace ffp;
+using namespace ffp::test;
+
+namespace {
+constexpr double kG = 9.81;
+constexpr double kMass = 7.71;
+}  // namespace
+
+TEST_CASE("reference FFP on 2 cm: M (v0 - v(t)) equals the integral of (R - M g) dt from history.csv within 1 %",
+          "[ffp][program][momentum]") {
+  ScratchDir scratch;
+  const auto out = scratch.path() / "run";
+  const ProgramResult r = run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                                       "mesh.min_cell_m=0.02", "--set", "output.field_times_s=[]"},
+                                      scratch.path());
+  REQUIRE(r.exit_code == 0);
+  const CsvData h = read_numeric_csv(out / "history.csv");
+  const nlohmann::json summary = read_json(out / "summary.json");
+  const auto& t = h.column("time_s");
+  const auto& v = h.column("velocity_m_s");
+  const auto& reaction = h.column("reaction_N");
+  const double v0 = 5.6, scale = kMass * v0;
+  // reaction_N on a row is the mean over the interval ending there, so the
+  // rectangle rule on the rows is the exact impulse; the trapezoid rule is what
+  // a reader of point samples would use, and must agree too.
+  double exact = 0.0, trapezoid = 0.0, worst_exact = 0.0, worst_trapezoid = 0.0;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const double dt = t[k] - t[k - 1];
+    exact += (reaction[k] - kMass * kG) * dt;
+    trapezoid += (0.5 * (reaction[k] + reaction[k - 1]) - kMass * kG) * dt;
+    const double momentum = kMass * (v0 - v[k]);
+    worst_exact = std::max(worst_exact, std::abs(momentum - exact) / scale);
+    worst_trapezoid = std::max(worst_trapezoid, std::abs(momentum - trapezoid) / scale);
+  }
+  INFO("worst |M(v0 − v) − ∫(R − Mg)dt| / (M v0): rectangle " << worst_exact << ", trapezoid " << worst_trapezoid);
+  CHECK(worst_exact < 0.01);
+  CHECK(worst_trapezoid < 0.01);
+  CHECK(summary["momentum_balance_error"].get<double>() < 1e-9);  // the exact impulse: round-off only
+  // It did stop: the FFP lost all of its momentum within the 0.15 s.
+  CHECK(summary["max_penetration_m"].get<double>() > 0.1);
+  CHECK(std::abs(v.back()) < 0.05 * v0);
+}
+
+TEST_CASE("reference FFP on 2 cm: no soil particle ends up deeper inside the FFP than a cell", "[ffp][program][intrusion]") {
+  // Contact acts at the nodes of the penetrometer (exact outline, detection 0):
+  // a particle just outside moves with a blend of corrected (inside) and free
+  // (outside) nodes and lags behind the surface until enough of its support is
+  // inside. Once it is a full cell deep every node of its linear support is a
+  // penetrometer node, so a particle deeper than a cell would mean the contact
+  // failed. Measured: 0.65 cells here, 0.73 at 1 cm.
+  ScratchDir scratch;
+  const auto out = scratch.path() / "run";
+  REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                       "mesh.min_cell_m=0.02", "--set", "end_time_s=0.08", "--set", "output.field_times_s=[]"},
+                      scratch.path())
+              .exit_code == 0);
+  const nlohmann::json summary = read_json(out / "summary.json");
+  INFO("deepest soil particle inside the outline: " << summary["max_soil_intrusion_m"] << " m");
+  CHECK(summary["max_soil_intrusion_cells"].get<double>() < 1.0);
+  CHECK(summary["wall_clamps"].get<long>() == 0);
+}
+
+TEST_CASE("FFP at rest on 2 cm: the reaction equals its weight (75.6 N) within 5 %", "[ffp][program][rest]") {
+  // Dropped at 1 m/s it stops within ~0.1 s; the reaction then oscillates slowly
+  // (the body bouncing on the elastic sand, undamped), so the mean over the last
+  // 0.15 s (several periods) is compared. 5 %: the tolerance.
+  ScratchDir scratch;
+  const auto out = scratch.path() / "run";
+  REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                       "mesh.min_cell_m=0.02", "--set", "end_time_s=0.4", "--set", "ffp.impact_velocity_m_s=1.0", "--set",
+                       "output.field_times_s=[]"},
+                      scratch.path())
+              .exit_code == 0);
+  const CsvData h = read_numeric_csv(out / "history.csv");
+  const auto& t = h.column("time_s");
+  const auto& impulse = h.column("impulse_N_s");
+  std::size_t from = 0;
+  while (t[from] < 0.25) ++from;
+  const double mean = (impulse.back() - impulse[from]) / (t.back() - t[from]);
+  INFO("mean reaction over " << t[from] << "–" << t.back() << " s: " << mean << " N; weight " << kMass * kG << " N");
+  CHECK(mean == Approx(kMass * kG).epsilon(0.05));
+  CHECK(std::abs(h.column("velocity_m_s").back()) < 0.02);  // at rest (1 m/s impact → < 2 cm/s)
+}
+
+TEST_CASE("CPT: the static reaction F_0 is the same pushed at 0.25 and at 0.125 m/s (1 cm, 2–8 cm depth)",
+          "[ffp][program][cpt]") {
+  // The sand is rate independent and the soil's inertia ρv²A is 0.6 N at 0.25 m/s
+  // against a mean F_0 of ~36 N over 2–8 cm (1.6 %); the profile itself carries
+  // stick–slip-like fluctuations (measured means at 0.25, 0.125 and 0.0625 m/s:
+  // 36.1, 37.2 and 36.3 N, no trend with speed). 5 % covers both. On a 2 cm mesh
+  // the same pair differs systematically (31.9 and 27.8 N; the report says so):
+  // the CPT scenes use 1 cm.
+  ScratchDir scratch;
+  auto run = [&](const std::string& scene, const std::string& out) {
+    REQUIRE(run_program({"run", scene_path(scene), "--out", (scratch.path() / out).string(), "--quiet", "--set",
+                         "end_depth_m=0.08", "--set", "output.field_times_s=[]", "--set", "output.history_interval_s=0.001"},
+                        scratch.path())
+                .exit_code == 0);
+    return read_numeric_csv(scratch.path() / out / "history.csv");
+  };
+  const CsvData fast = run("cpt_reference.json", "fast"), slow = run("cpt_slow.json", "slow");
+  const double f_fast = mean_reaction(fast, 0.02, 0.08), f_slow = mean_reaction(slow, 0.02, 0.08);
+  INFO("mean F_0 over 2–8 cm: " << f_fast << " N at 0.25 m/s, " << f_slow << " N at 0.125 m/s");
+  REQUIRE(f_slow > 10.0);  // a real resistance, not an empty run
+  CHECK(f_fast == Approx(f_slow).epsilon(0.05));
+}

@@ -1,0 +1,102 @@
+/// Validation of the `ffp` and `cpt` scenes: every shipped scene is valid, and
+/// inputs that mean nothing (or two things) are refused with exit code 2 and a
+/// message naming the JSON path.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "ffp_test_support.hpp"
+
+using namespace ffp;
+using namespace ffp::test;
+using nlohmann::json;
+
+namespace {
+
+json reference() { return read_json(scene_path("ffp_reference.json")); }
+json cpt() { return read_json(scene_path("cpt_reference.json")); }
+
+/// `ffp check` on the scene: exit code and stderr.
+ProgramResult check(const json& scene) {
+  ScratchDir scratch;
+  const auto file = scratch.path() / "scene.json";
+  std::ofstream(file) << scene.dump(2);
+  return run_program({"check", file.string()}, scratch.path());
+}
+
+void refused(const json& scene, const std::string& path, const std::string& words) {
+  const ProgramResult r = check(scene);
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find(path) != std::string::npos);
+  CHECK(r.err.find(words) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("every shipped ffp and cpt scene is valid", "[ffp][scene]") {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(FFP_SOURCE_DIR) + "/data/scenes")) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("ffp_", 0) != 0 && name.rfind("cpt_", 0) != 0) continue;
+    ScratchDir scratch;
+    const ProgramResult r = run_program({"check", entry.path().string()}, scratch.path());
+    INFO(name << ": " << r.err);
+    CHECK(r.exit_code == 0);
+    ++scenes;
+  }
+  CHECK(scenes >= 9);
+}
+
+TEST_CASE("a rigid FFP with stiffness keys is refused", "[ffp][scene]") {
+  json s = reference();
+  s["ffp"]["E_kPa"] = 2e8;
+  refused(s, "ffp.E_kPa", "rigid penetrometer has no stiffness");
+}
+
+TEST_CASE("contact with both delta_deg and rough, or with neither, is refused", "[ffp][scene]") {
+  json both = reference();
+  both["contact"]["rough"] = true;
+  refused(both, "contact.delta_deg", "not both");
+  json neither = reference();
+  neither["contact"] = json::object();
+  refused(neither, "contact.delta_deg", "is required");
+}
+
+TEST_CASE("a deformable FFP with a rigid-body force is refused", "[ffp][scene]") {
+  json s = reference();
+  s["ffp"]["deformable"] = {{"E_kPa", 20000}, {"nu", 0.0}};
+  s["ffp"]["rigid_body_force"] = "soil_internal_force";
+  refused(s, "ffp.rigid_body_force", "rigid penetrometer only");
+}
+
+TEST_CASE("damping is refused for the dynamic FFP impact", "[ffp][scene]") {
+  json s = reference();
+  s["solver"]["local_damping"] = 0.05;
+  refused(s, "solver.local_damping", "no artificial damping");
+}
+
+TEST_CASE("a push velocity belongs to cpt, a mass and an impact velocity to ffp", "[ffp][scene]") {
+  json f = reference();
+  f["ffp"]["push_velocity_m_s"] = 0.02;
+  refused(f, "ffp.push_velocity_m_s", "kind cpt");
+  json c = cpt();
+  c["ffp"]["mass_kg"] = 7.71;
+  refused(c, "ffp.mass_kg", "no mass");
+  json both = cpt();
+  both["end_time_s"] = 1.0;
+  refused(both, "end_time_s", "not both");
+}
+
+TEST_CASE("a mesh or body that does not fit the chamber is refused", "[ffp][scene]") {
+  json coarse = reference();
+  coarse["mesh"]["min_cell_m"] = 0.39;  // no cell between the body and the wall
+  refused(coarse, "mesh.min_cell_m", "no cell between");
+  json deep = reference();
+  deep["mesh"]["band_below_m"] = 0.39;
+  refused(deep, "mesh.band_below_m", "two cells of sand");
+  json typo = reference();
+  typo["ffp"]["mas_kg"] = 7.71;
+  refused(typo, "ffp.mas_kg", "mass_kg");
+}

@@ -1,0 +1,113 @@
+/// The moving mesh (Al-Kafaji 2013, paper Fig. 4b) and the FFP grid layout:
+/// the band translates with the penetrometer, the zone below compresses and the
+/// zone above stretches uniformly, and every size follows min_cell_m.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "mpm/ffp_model.hpp"
+#include "mpm/moving_mesh.hpp"
+#include "mpm/simulation.hpp"
+
+using namespace ffp;
+using namespace ffp::mpm;
+
+namespace {
+constexpr double kExact = 1e-12;  // coordinates of order 1 m: round-off only
+}
+
+TEST_CASE("moving mesh: the band translates, the zones below and above scale uniformly, the ends stay",
+          "[ffp][moving_mesh]") {
+  const std::vector<double> z0 = {-0.4, -0.3, -0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.3, 0.5};
+  const MovingMesh mesh(z0, 3, 7);
+  const double u = -0.07;
+  const std::vector<double> z = mesh.coordinates(u);
+  REQUIRE(z.size() == z0.size());
+  CHECK(z.front() == -0.4);
+  CHECK(z.back() == 0.5);
+  for (int j = 3; j <= 7; ++j) CHECK(z[j] == Approx(z0[j] + u).epsilon(kExact));
+  const double below = (z0[3] + u + 0.4) / (z0[3] + 0.4), above = (0.5 - z0[7] - u) / (0.5 - z0[7]);
+  for (int j = 0; j < 3; ++j) CHECK(z[j + 1] - z[j] == Approx(below * (z0[j + 1] - z0[j])).epsilon(kExact));
+  for (int j = 7; j < 9; ++j) CHECK(z[j + 1] - z[j] == Approx(above * (z0[j + 1] - z0[j])).epsilon(kExact));
+  CHECK_THROWS_AS(mesh.coordinates(-0.29), StepFailure);  // the band would squeeze the zone below to ~3 %
+}
+
+TEST_CASE("FFP grid: a node on the base radius, fine cells no smaller than min_cell_m, band around the body",
+          "[ffp][moving_mesh]") {
+  FfpDescription d;
+  for (double h : {0.02, 0.01, 0.005}) {
+    d.mesh.min_cell_m = h;
+    d.mesh.max_cell_m = 3 * h;
+    d.mesh.below_cell_m = 2 * h;
+    const FfpGridLayout g = ffp_grid_layout(d);
+    INFO("min_cell_m = " << h);
+    CHECK(std::count(g.r_nodes_m.begin(), g.r_nodes_m.end(), d.shape.base_radius_m) == 1);
+    CHECK(g.r_nodes_m.front() == 0.0);
+    CHECK(g.r_nodes_m.back() == Approx(d.soil.radius_m).epsilon(kExact));
+    CHECK(g.z_nodes_m.front() == Approx(-d.soil.depth_m).epsilon(kExact));
+    double smallest = 1.0, largest = 0.0;
+    for (const auto* axis : {&g.r_nodes_m, &g.z_nodes_m})
+      for (std::size_t k = 1; k < axis->size(); ++k) {
+        smallest = std::min(smallest, (*axis)[k] - (*axis)[k - 1]);
+        largest = std::max(largest, (*axis)[k] - (*axis)[k - 1]);
+      }
+    CHECK(smallest == Approx(h).epsilon(1e-9));
+    CHECK(largest <= 3 * h * 1.25);  // max_cell, up to the last graded cell's fit
+    // The sand surface is a grid line inside the band, and the band holds the whole body.
+    CHECK(std::count_if(g.z_nodes_m.begin(), g.z_nodes_m.end(), [](double z) { return std::abs(z) < 1e-12; }) == 1);
+    CHECK(g.z_nodes_m[g.band_first] < 0.0);
+    CHECK(g.z_nodes_m[g.band_last] > d.shape.total_length_m());
+  }
+}
+
+TEST_CASE("FFP run: the moving band follows the rigid penetrometer and no particle leaves the grid",
+          "[ffp][moving_mesh]") {
+  FfpDescription d;
+  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * 3.14159265358979 / 180, 0, 0});
+  d.mesh.min_cell_m = 0.02;
+  d.mesh.max_cell_m = 0.06;
+  d.mesh.below_cell_m = 0.04;
+  d.contact.friction = std::tan(20.0 * 3.14159265358979 / 180);
+  FfpRun run(d);
+  Simulation& s = run.simulation();
+  const int band = run.layout().band_first + 3;
+  const double z0 = s.grid.z.coordinate(band);
+  while (s.time_s < 0.02) run.advance();
+  // The band row sits where it started plus the tip's displacement (exact: a translation).
+  CHECK(s.grid.z.coordinate(band) == Approx(z0 + (run.tip_z_m() - 0.0)).epsilon(1e-12));
+  CHECK(run.penetration_m() > 0.05);  // it did move (5.6 m/s for 20 ms, decelerating)
+  CHECK(s.wall_clamps == 0);
+}
+
+TEST_CASE("FFP sand: the near zone keeps its particle spacing in the taller compressing cells, K0 stress set",
+          "[ffp][moving_mesh]") {
+  // Paper section 4: ~10 particles per cell below the FFP, 4 elsewhere. Here 3 × 3 per
+  // min-cell² near the axis, at the same spacing in the 2× taller cells of the
+  // compressing zone (so the band meets the same density as it moves down), 2 × 2
+  // per cell in the far field.
+  FfpDescription d;
+  d.mesh.min_cell_m = 0.02;
+  d.mesh.max_cell_m = 0.06;
+  d.mesh.below_cell_m = 0.04;
+  FfpRun run(d);
+  const Simulation& s = run.simulation();
+  const FfpGridLayout& g = run.layout();
+  auto count_in_cell = [&](int i, int j) {
+    int n = 0;
+    for (std::size_t p = 0; p < s.particles.size(); ++p)
+      if (s.particles.r[p] > g.r_nodes_m[i] && s.particles.r[p] < g.r_nodes_m[i + 1] && s.particles.z[p] > g.z_nodes_m[j] &&
+          s.particles.z[p] < g.z_nodes_m[j + 1])
+        ++n;
+    return n;
+  };
+  const int near_band = count_in_cell(0, g.band_first), near_compressing = count_in_cell(0, 1);
+  const int far = count_in_cell(static_cast<int>(g.r_nodes_m.size()) - 2, 1);
+  CHECK(near_band == 9);
+  CHECK(near_compressing == 3 * static_cast<int>(std::lround(3 * (g.z_nodes_m[2] - g.z_nodes_m[1]) / 0.02)));
+  CHECK(far == 4);
+  // σ'_v = γ·depth at a particle near the bottom (tension-positive Voigt).
+  const double gamma = d.soil.density_kg_m3 * d.gravity_m_s2;
+  for (std::size_t p = 0; p < s.particles.size(); p += 97)
+    CHECK(-s.particles.stress[p][1] == Approx(gamma * -s.particles.z[p]).epsilon(1e-12));
+}
