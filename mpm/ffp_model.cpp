@@ -113,7 +113,8 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
     throw std::invalid_argument("particles per cell must be ≥ 1");
   m.bodies.push_back(BodyDescription{"soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0},
-                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0, GeostaticStress{s.k0, 0.0}});
+                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0, GeostaticStress{s.k0, 0.0},
+                                     s.disconnected_density_ratio * s.density_kg_m3});
   const double h = d.mesh.min_cell_m;
   m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, h / s.near_ppc_r,
                                         h / s.near_ppc_z});
@@ -129,7 +130,8 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
                                        f.ppc_z,
                                        0.0,
                                        d.velocity_m_s,
-                                       std::nullopt});
+                                       std::nullopt,
+                                       0.0});
   }
   return m;
 }

@@ -35,6 +35,11 @@ struct FfpSoil {
   /// Elsewhere: particles per grid cell (paper: 4).
   int far_ppc_r = 2, far_ppc_z = 2;
   double near_radius_m = 0.15, near_depth_m = 0.4;
+  /// Below this fraction of its initial density a sand particle has lost grain
+  /// contact and carries no stress (MaterialGroup::disconnected_below_kg_m3; 0: never).
+  /// 0.5 is far beyond any packing (loose sand at D_r = 0 is already at e_max), so
+  /// only soil thrown up or torn apart is affected.
+  double disconnected_density_ratio = 0.5;
 };
 
 struct FfpMesh {

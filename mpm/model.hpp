@@ -70,6 +70,9 @@ struct BodyDescription {
   int particles_per_cell_r = 2, particles_per_cell_z = 2;
   double initial_velocity_r_m_s = 0.0, initial_velocity_z_m_s = 0.0;
   std::optional<GeostaticStress> initial_stress;  ///< needs gravity
+  /// Granular bodies: below this density (kg/m³) the grains have lost contact and
+  /// the particle carries no stress (0: never). See MaterialGroup.
+  double disconnected_below_kg_m3 = 0.0;
 };
 
 enum class Side : std::uint8_t { inner, outer };

@@ -41,6 +41,9 @@ Simulation::Simulation(const ModelDescription& model)
                           model.seeding_zones);
     if (particles.size() == begin) throw std::invalid_argument("body " + d.name + " has no particle inside the grid");
     groups.emplace_back(d.name, d.law, d.density_kg_m3);
+    if (!(d.disconnected_below_kg_m3 >= 0.0 && d.disconnected_below_kg_m3 < d.density_kg_m3))
+      throw std::invalid_argument("body " + d.name + ": the disconnection density must be ≥ 0 and below the density");
+    groups.back().disconnected_below_kg_m3 = d.disconnected_below_kg_m3;
     groups.back().begin = begin;
     groups.back().end = particles.size();
     if (std::holds_alternative<StrainSofteningMohrCoulomb>(d.law))
@@ -98,6 +101,8 @@ double cfl_time_step_limit(const Simulation& s) {
       stress = std::max(stress, bound);
     }
     if (bad > 0) break;
+    // A disconnected particle is stress-free; it reconnects at the disconnection density.
+    if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
     fastest = std::max(fastest, std::sqrt((g.constrained_modulus() + stress) * stiffest) + std::sqrt(speed2));
   }
   if (bad > 0) {

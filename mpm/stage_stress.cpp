@@ -55,7 +55,8 @@ void smooth_mean_stress(Simulation& s) {
 // Jaumann rate (objective for large rotations), before the law:
 //   σ ← σ + ΔW σ − σ ΔW,  ΔW = [[0, w], [−w, 0]] in (r, z), w = W_rz Δt:
 //   σ_rr += 2wσ_rz,  σ_zz −= 2wσ_rz,  σ_rz += w(σ_zz − σ_rr);  σ_θθ unchanged.
-// Then σ ← law(σ, Δε) for each material group, one batch call per chunk.
+// Then σ ← law(σ, Δε) for each material group, one batch call per chunk, and
+// σ ← 0 where a granular particle has lost grain contact (ρ_p below the group's limit).
 void update_stresses(Simulation& s) {
   constexpr std::size_t chunk = 512;
   std::vector<Voigt>& stress = s.particles.stress;
@@ -76,6 +77,12 @@ void update_stresses(Simulation& s) {
         strain[p] += s.strain_increment[p];  // after smoothing: the strain the law sees
       }
       g.update(first, last, stress, s.strain_increment, s.dt_s);
+      if (g.disconnected_below_kg_m3 > 0.0) {
+        // ρ_p = m_p/V_p < ρ_disconnected: the grains no longer touch, σ = 0.
+        const double limit = g.disconnected_below_kg_m3;
+        for (std::size_t p = first; p < last; ++p)
+          if (s.particles.mass[p] < limit * s.particles.volume[p]) stress[p].setZero();
+      }
     }
   }
 }

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/output/interrupt.hpp"
+#include "drivers/scene/scene_reader.hpp"
 
 extern char** environ;
 
@@ -69,28 +70,52 @@ std::string last_line(const fs::path& log) {
   return last;
 }
 
-}  // namespace
+/// Integers as doubles, so that a scene's 2500 and an override's 2500.0 give the same key.
+void normalise_numbers(nlohmann::json& node) {
+  if (node.is_number()) {
+    node = node.get<double>();
+  } else if (node.is_object() || node.is_array()) {
+    for (auto& child : node) normalise_numbers(child);
+  }
+}
 
-std::string run_key(const RunRequest& request, const std::string& program_version) {
-  std::string material = nlohmann::json::parse(read_file(request.scene_file)).dump();
-  for (const auto& o : request.overrides) material += "\n--set " + o;
-  collect_referenced_files(nlohmann::json::parse(read_file(request.scene_file)), request.scene_file.parent_path(),
-                           material);
-  material += "\n" + program_version;
+std::string hex_key(const std::string& material) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(material)));
   return hex;
 }
 
+}  // namespace
+
+std::string run_key(const RunRequest& request, const std::string& program_version) {
+  // The scene as it will run: overrides applied, so that an override equal to the
+  // file's value (a sweep's reference point) shares the plain run's cache entry.
+  nlohmann::json scene = nlohmann::json::parse(read_file(request.scene_file));
+  for (const auto& o : request.overrides) apply_override(scene, o);
+  scene.erase("description");  // prose only
+  normalise_numbers(scene);
+  std::string material = scene.dump();
+  collect_referenced_files(scene, request.scene_file.parent_path(), material);
+  material += "\n" + program_version;
+  return hex_key(material);
+}
+
+std::string program_identity(const fs::path& binary, const std::string& program_version) {
+  // The version string alone misses a rebuild without a new commit; the binary's
+  // bytes do not (a few MB: milliseconds).
+  return program_version + " " + hex_key(read_file(binary));
+}
+
 std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const fs::path& cache_root, const std::string& program_version, int jobs) {
   fs::create_directories(cache_root);
+  const std::string identity = program_identity(ffp_binary, program_version);
   std::vector<RunOutcome> outcomes(requests.size());
   std::vector<std::size_t> pending;
   std::map<std::string, std::size_t> first_with_key;  // studies may share a run: run it once
   std::vector<std::pair<std::size_t, std::size_t>> duplicates;
   for (std::size_t i = 0; i < requests.size(); ++i) {
-    const std::string key = run_key(requests[i], program_version);
+    const std::string key = run_key(requests[i], identity);
     const auto [it, inserted] = first_with_key.emplace(key, i);
     if (!inserted) {
       duplicates.emplace_back(i, it->second);

@@ -22,11 +22,16 @@ struct RunOutcome {
   std::string error;                    ///< last stderr line when it failed
 };
 
-/// Content key of a run: the canonical scene JSON, the overrides, the content
-/// of every file the scene names (e.g. a lab CSV) and the program version.
-std::string run_key(const RunRequest& request, const std::string& program_version);
+/// Content key of a run: the scene JSON with the overrides applied (numbers
+/// normalised, the description left out), the content of every file the scene
+/// names (e.g. a lab CSV) and the program's identity.
+std::string run_key(const RunRequest& request, const std::string& program_identity);
 
-/// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/,
+/// The version string and a hash of the program's binary: a rebuild changes it.
+std::string program_identity(const std::filesystem::path& binary, const std::string& program_version);
+
+/// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/
+/// (key: run_key with program_identity(ffp_binary, program_version)),
 /// skipping those whose summary.json already exists. Progress lines go to stderr.
 std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const std::filesystem::path& cache_root, const std::string& program_version,

@@ -8,6 +8,14 @@ std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   std::vector<Study> studies;
   studies.push_back(calibration_study(scenes_dir));
   studies.push_back(integration_error_study(scenes_dir));
+  studies.push_back(ffp_paper_comparison_study(scenes_dir));
+  studies.push_back(ffp_compressibility_study(scenes_dir));
+  studies.push_back(ffp_stiffness_study(scenes_dir));
+  studies.push_back(ffp_contact_friction_study(scenes_dir));
+  studies.push_back(ffp_dilatancy_study(scenes_dir));
+  studies.push_back(ffp_peak_friction_study(scenes_dir));
+  studies.push_back(ffp_rate_factor_study(scenes_dir));
+  studies.push_back(ffp_convergence_study(scenes_dir));
   return studies;
 }
 

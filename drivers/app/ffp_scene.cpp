@@ -55,10 +55,13 @@ void read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), jaky_k0(spec));
   std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
   std::tie(d.soil.far_ppc_r, d.soil.far_ppc_z) = particles_per_cell(soil, "particles_per_cell_far", 2);
-  d.soil.near_radius_m = soil.number("near_radius_m", Range::closed(0.0, d.soil.radius_m, "m (≤ radius_m)"), 0.15);
+  d.soil.near_radius_m = soil.number("near_radius_m", Range::closed(0.0, d.soil.radius_m, "m (≤ radius_m)"),
+                                     std::min(0.15, d.soil.radius_m));
   d.soil.near_depth_m =
       soil.number("near_depth_m", Range::closed(0.0, d.soil.depth_m, "m (≤ depth_m)"), d.soil.depth_m);
-  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near, particles_per_cell_far, near_radius_m, near_depth_m)");
+  d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
+  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near, particles_per_cell_far, near_radius_m, "
+              "near_depth_m, disconnected_density_ratio)");
 }
 
 /// Returns the push velocity (cpt) or the impact velocity (ffp), + down.

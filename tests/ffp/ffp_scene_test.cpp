@@ -100,3 +100,15 @@ TEST_CASE("a mesh or body that does not fit the chamber is refused", "[ffp][scen
   typo["ffp"]["mas_kg"] = 7.71;
   refused(typo, "ffp.mas_kg", "mass_kg");
 }
+
+TEST_CASE("the sand's disconnection density ratio must be in [0, 1)", "[ffp][scene]") {
+  json whole = reference();
+  whole["soil"]["disconnected_density_ratio"] = 1.0;  // every particle would start disconnected
+  refused(whole, "soil.disconnected_density_ratio", "< 1");
+  json negative = reference();
+  negative["soil"]["disconnected_density_ratio"] = -0.1;
+  refused(negative, "soil.disconnected_density_ratio", "≥ 0");
+  json off = reference();
+  off["soil"]["disconnected_density_ratio"] = 0.0;  // the rule switched off
+  CHECK(check(off).exit_code == 0);
+}

@@ -1,0 +1,91 @@
+// The report's and the sweep's run cache: a run is identified by the scene it
+// will really run and by the program that runs it, nothing else.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+
+#include "reports/run_pool.hpp"
+
+namespace fs = std::filesystem;
+using ffp::RunRequest;
+using ffp::run_key;
+
+namespace {
+
+struct Scratch {
+  fs::path dir;
+  Scratch() : dir(fs::temp_directory_path() / ("ffp_run_pool_" + std::to_string(::getpid()))) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() { fs::remove_all(dir); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+};
+
+constexpr const char* kScene = R"({"kind": "triaxial", "name": "t", "description": "first words",
+  "material": {"model": "mohr_coulomb", "E_kPa": 2500, "nu": 0.33, "phi_peak_deg": 39}})";
+
+}  // namespace
+
+TEST_CASE("run key: an override equal to the scene's value shares the plain run's key", "[reports]") {
+  Scratch s;
+  const fs::path scene = s.write("t.json", kScene);
+  const std::string plain = run_key({"a", scene, {}}, "v1");
+  CHECK(run_key({"b", scene, {"material.E_kPa=2500"}}, "v1") == plain);
+  CHECK(run_key({"c", scene, {"material.E_kPa=2500.0"}}, "v1") == plain);  // 2500 and 2500.0 are one number
+  CHECK(run_key({"d", scene, {"description=other words"}}, "v1") == plain);  // prose does not change a run
+}
+
+TEST_CASE("run key: a changed value, a changed referenced file or another program is a new run", "[reports]") {
+  Scratch s;
+  const fs::path scene = s.write("t.json", kScene);
+  const std::string plain = run_key({"a", scene, {}}, "v1");
+  CHECK(run_key({"a", scene, {"material.E_kPa=5000"}}, "v1") != plain);
+  CHECK(run_key({"a", scene, {"material.model=ssmc"}}, "v1") != plain);
+  CHECK(run_key({"a", scene, {}}, "v2") != plain);
+
+  s.write("lab.csv", "axial_strain,deviatoric_stress_kPa\n0,0\n0.01,1\n");
+  const fs::path with_csv = s.write("c.json", R"({"kind": "calibration", "lab_curve_csv": "lab.csv"})");
+  const std::string before = run_key({"a", with_csv, {}}, "v1");
+  s.write("lab.csv", "axial_strain,deviatoric_stress_kPa\n0,0\n0.01,2\n");
+  CHECK(run_key({"a", with_csv, {}}, "v1") != before);
+}
+
+TEST_CASE("program identity changes with the binary's bytes, not only with the version string", "[reports]") {
+  Scratch s;
+  const fs::path a = s.write("a.bin", "one build");
+  const fs::path b = s.write("b.bin", "another build");
+  CHECK(ffp::program_identity(a, "0.1.0") == ffp::program_identity(a, "0.1.0"));
+  CHECK(ffp::program_identity(a, "0.1.0") != ffp::program_identity(b, "0.1.0"));
+}
+
+TEST_CASE("a sweep runs each distinct combination once and a repeated sweep comes from the cache", "[reports]") {
+  Scratch s;
+  const fs::path scene = fs::path(FFP_SOURCE_DIR) / "data/scenes/triaxial_mc.json";
+  const fs::path out = s.dir / "sweep";
+  const std::string command = std::string(FFP_BINARY) + " sweep " + scene.string() +
+                              " --set material.phi_peak_deg=30,39 --jobs 2 --out " + out.string() + " 2>" +
+                              (s.dir / "log").string();
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream table(out / "sweep.csv");
+  std::string header, row;
+  std::getline(table, header);
+  int rows = 0;
+  while (std::getline(table, row)) ++rows;
+  CHECK(rows == 2);
+  CHECK(header.find("peak_q_kPa") != std::string::npos);
+
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream log(s.dir / "log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  CHECK(text.find("0 to do, 2 cached") != std::string::npos);
+}
