@@ -43,8 +43,9 @@ std::string quoted(const std::string& text) {
 void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int& block) {
   script << "set title " << quoted(plot.title) << "\n";
   script << "set xlabel " << quoted(plot.x_label) << "\nset ylabel " << quoted(plot.y_label) << "\n";
-  script << (plot.log_x ? "set logscale x\n" : "unset logscale x\n");
-  script << (plot.log_y ? "set logscale y\n" : "unset logscale y\n");
+  // Log axes in %g (1e-05, 0.001, 0.1): gnuplot's default prints 0.0000010.
+  script << (plot.log_x ? "set logscale x\nset format x '%g'\n" : "unset logscale x\nset format x '% h'\n");
+  script << (plot.log_y ? "set logscale y\nset format y '%g'\n" : "unset logscale y\nset format y '% h'\n");
   script << (plot.reverse_y ? "set yrange [*:*] reverse\n" : "set yrange [*:*] noreverse\n");
   script << "set key " << plot.key_position << "\n";
   script << "plot ";

@@ -7,6 +7,7 @@ namespace ffp {
 std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   std::vector<Study> studies;
   studies.push_back(calibration_study(scenes_dir));
+  studies.push_back(mesh_calibration_study(scenes_dir));
   studies.push_back(integration_error_study(scenes_dir));
   studies.push_back(ffp_paper_comparison_study(scenes_dir));
   studies.push_back(ffp_compressibility_study(scenes_dir));

@@ -16,6 +16,14 @@ CsvData StudyResults::history(std::size_t i) const {
   return read_numeric_csv(outcomes_[i].out_dir / "history.csv");
 }
 
+StudyResults StudyResults::extended(const std::vector<RunRequest>& requests,
+                                   const std::vector<RunOutcome>& outcomes) const {
+  StudyResults more = *this;
+  more.requests_.insert(more.requests_.end(), requests.begin(), requests.end());
+  more.outcomes_.insert(more.outcomes_.end(), outcomes.begin(), outcomes.end());
+  return more;
+}
+
 double StudyResults::total_wall_time_s() const {
   double total = 0.0;
   for (std::size_t i = 0; i < size(); ++i) total += summary(i).value("wall_time_s", 0.0);

@@ -30,6 +30,8 @@ class StudyResults {
   }
   /// Sum of the run wall times recorded in the summaries.
   double total_wall_time_s() const;
+  /// These results followed by more runs' (a study's follow-up runs).
+  StudyResults extended(const std::vector<RunRequest>& requests, const std::vector<RunOutcome>& outcomes) const;
 
  private:
   std::vector<RunRequest> requests_;
@@ -46,6 +48,10 @@ struct StudyOutput {
 struct Study {
   std::string title;
   std::vector<RunRequest> runs;
+  /// Runs that need the results of `runs` (e.g. an FFP run fed the η a
+  /// calibration found): asked for once `runs` are done; their outcomes follow
+  /// those of `runs` in what `write` sees. Empty: none.
+  std::function<std::vector<RunRequest>(const StudyResults&)> follow_up;
   std::function<void(const StudyResults&, StudyOutput&)> write;
 };
 

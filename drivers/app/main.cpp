@@ -27,7 +27,7 @@ Commands:
         Measure the speed of the constitutive updates and the MPM step.
   --help, --version
 
-Scene kinds: point, triaxial, calibration, ffp, cpt (see README.md).
+Scene kinds: point, triaxial, calibration, integration_error, mpm, ffp, cpt (see README.md).
 Exit codes: 0 done, 1 run failed, 2 bad input, 130 interrupted.
 )";
 

@@ -78,10 +78,31 @@ int command_report(const Arguments& args) {
       std::erase_if(studies, [&](const Study& s) { return s.title.find(only) == std::string::npos; });
       if (studies.empty()) throw SceneError("--only: no study title contains '" + only + "'");
     }
+    // Two rounds: every study's own runs, then the runs that need their results.
     std::vector<RunRequest> all;
     for (const auto& s : studies) all.insert(all.end(), s.runs.begin(), s.runs.end());
     std::fprintf(stderr, "report: %zu studies, %zu runs\n", studies.size(), all.size());
-    const std::vector<RunOutcome> outcomes = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs);
+    const std::vector<RunOutcome> first = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs);
+    std::vector<StudyResults> results;
+    std::vector<std::vector<RunRequest>> follow_ups(studies.size());
+    std::vector<RunRequest> second_round;
+    for (std::size_t k = 0, offset = 0; k < studies.size(); offset += studies[k].runs.size(), ++k) {
+      const auto begin = first.begin() + static_cast<long>(offset);
+      results.emplace_back(studies[k].runs,
+                           std::vector<RunOutcome>(begin, begin + static_cast<long>(studies[k].runs.size())));
+      if (studies[k].follow_up) follow_ups[k] = studies[k].follow_up(results.back());
+      second_round.insert(second_round.end(), follow_ups[k].begin(), follow_ups[k].end());
+    }
+    if (!second_round.empty()) {
+      std::fprintf(stderr, "report: %zu runs that use the results above\n", second_round.size());
+      const std::vector<RunOutcome> second = run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs);
+      for (std::size_t k = 0, offset = 0; k < studies.size(); offset += follow_ups[k].size(), ++k) {
+        if (follow_ups[k].empty()) continue;
+        const auto begin = second.begin() + static_cast<long>(offset);
+        results[k] = results[k].extended(follow_ups[k],
+                                         std::vector<RunOutcome>(begin, begin + static_cast<long>(follow_ups[k].size())));
+      }
+    }
 
     RunDirectory directory(out);
     fs::create_directories(directory.path() / "figures");
@@ -98,25 +119,20 @@ int command_report(const Arguments& args) {
                               {"generated", today()},
                               {"command", "ffp report --jobs " + std::to_string(jobs)}});
 
-    std::size_t offset = 0;
     std::vector<std::vector<std::string>> run_rows;
     int failures = 0;
-    for (const auto& s : studies) {
-      std::vector<RunOutcome> mine(outcomes.begin() + static_cast<long>(offset),
-                                   outcomes.begin() + static_cast<long>(offset + s.runs.size()));
-      offset += s.runs.size();
-      StudyResults results(s.runs, mine);
-      for (std::size_t i = 0; i < results.size(); ++i) {
-        const auto summary = results.summary(i);
-        if (!results.ok(i)) ++failures;
-        run_rows.push_back({s.runs[i].label, results.ok(i) ? "ok" : "FAILED: " + results.outcome(i).error,
+    for (std::size_t k = 0; k < studies.size(); ++k) {
+      const StudyResults& mine = results[k];
+      for (std::size_t i = 0; i < mine.size(); ++i) {
+        const auto summary = mine.summary(i);
+        if (!mine.ok(i)) ++failures;
+        run_rows.push_back({mine.request(i).label, mine.ok(i) ? "ok" : "FAILED: " + mine.outcome(i).error,
                             summary.contains("wall_time_s") ? fixed(summary["wall_time_s"].get<double>(), 2) : "–",
-                            results.outcome(i).cached ? "cached" : "ran now",
-                            results.outcome(i).out_dir.filename().string()});
+                            mine.outcome(i).cached ? "cached" : "ran now", mine.outcome(i).out_dir.filename().string()});
       }
-      document.heading(2, s.title);
+      document.heading(2, studies[k].title);
       StudyOutput output{document, directory.path() / "figures", "figures", directory.path() / "tables"};
-      s.write(results, output);
+      studies[k].write(mine, output);
     }
 
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -91,35 +91,4 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
   return study;
 }
 
-Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
-  Study study;
-  study.title = "Summary: the paper and the experiment against ours";
-  study.runs = {scene_run(scenes_dir, "ffp_reference.json", "rigid FFP"),
-                scene_run(scenes_dir, "ffp_calibrated.json", "FFP, calibrated SSMC (φ'_p = 60°)")};
-  study.write = [](const StudyResults& results, StudyOutput& out) {
-    auto& md = out.document;
-    const double peak = figure(results, 0, "peak_deceleration_g");
-    const double final_depth = figure(results, 0, "final_penetration_m");
-    const double time_of_peak = figure(results, 0, "time_of_peak_s");
-    const double rest = figure(results, 0, "final_reaction_N");
-    const double cal_peak = figure(results, 1, "peak_deceleration_g");
-    const double cal_depth = figure(results, 1, "final_penetration_m");
-    md.table({"quantity", "paper / experiment", "ours", "difference"},
-             {{"MC reference: peak deceleration", "≈ 15 g (paper)", fixed(peak, 1) + " g", percent_difference(peak, 15.0)},
-              {"MC reference: time of peak", "≈ 0.03 s (paper, Fig. 7)", fixed(time_of_peak, 3) + " s",
-               percent_difference(time_of_peak, 0.03)},
-              {"MC reference: final penetration", "18–20 cm (paper)", fixed(100 * final_depth, 1) + " cm",
-               percent_difference(100 * final_depth, 19.0) + " vs 19 cm"},
-              {"MC reference: reaction at rest", "≈ weight 75.6 N (paper, Fig. 7d)", fixed(rest, 1) + " N",
-               percent_difference(rest, 75.6)},
-              {"calibrated SSMC φ'_p = 60°: peak deceleration", "19.4 g (experiment)", fixed(cal_peak, 1) + " g",
-               percent_difference(cal_peak, 19.4)},
-              {"calibrated SSMC φ'_p = 60°: final penetration", "≈ 15.2 cm (experiment, derived: see data/experiment)",
-               fixed(100 * cal_depth, 1) + " cm", percent_difference(100 * cal_depth, 15.2)}});
-    md.paragraph("The experiment's time histories are not public; the comparisons use the scalar values the paper "
-                 "states (data/experiment/). The paper's own numbers are read from its text, not from its figures.");
-  };
-  return study;
-}
-
 }  // namespace ffp

@@ -8,6 +8,7 @@ namespace ffp {
 
 Study integration_error_study(const std::filesystem::path& scenes_dir);
 Study calibration_study(const std::filesystem::path& scenes_dir);
+Study mesh_calibration_study(const std::filesystem::path& scenes_dir);
 Study ffp_compressibility_study(const std::filesystem::path& scenes_dir);
 Study ffp_stiffness_study(const std::filesystem::path& scenes_dir);
 Study ffp_contact_friction_study(const std::filesystem::path& scenes_dir);

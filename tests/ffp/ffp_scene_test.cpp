@@ -101,7 +101,7 @@ TEST_CASE("a mesh or body that does not fit the chamber is refused", "[ffp][scen
   refused(typo, "ffp.mas_kg", "mass_kg");
 }
 
-TEST_CASE("the sand's disconnection density ratio must be in [0, 1)", "[ffp][scene]") {
+TEST_CASE("the sand's disconnection density ratio must be at least 0 and below 1", "[ffp][scene]") {
   json whole = reference();
   whole["soil"]["disconnected_density_ratio"] = 1.0;  // every particle would start disconnected
   refused(whole, "soil.disconnected_density_ratio", "< 1");

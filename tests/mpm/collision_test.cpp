@@ -44,7 +44,7 @@ CollisionResult collide(ShapeFunction shape) {
 
 }  // namespace
 
-TEST_CASE("colliding elastic spheres bounce apart; GIMP loses under 5% of the energy",
+TEST_CASE("colliding elastic spheres bounce apart and GIMP loses under 5% of the energy",
           "[mpm][verification][collision]") {
   const CollisionResult gimp = collide(ShapeFunction::gimp);
   const CollisionResult linear = collide(ShapeFunction::linear);

@@ -68,7 +68,7 @@ TEST_CASE("shape functions: partition of unity, zero gradient sum, GIMP equals l
   }
 }
 
-TEST_CASE("stage list: a model gets only the stages it needs; stages insert by name", "[mpm][stages]") {
+TEST_CASE("stage list: a model gets only the stages it needs and stages insert by name", "[mpm][stages]") {
   ModelDescription m;
   m.r_nodes_m = testing::nodes(0.0, 0.1, 4);
   m.z_nodes_m = testing::nodes(0.0, 0.1, 4);
@@ -125,7 +125,7 @@ TEST_CASE("Jaumann rotation turns the stress with the material spin", "[mpm][str
   CHECK(out[2] == sigma[2]);
 }
 
-TEST_CASE("time step follows the CFL limit; a fixed step above it stops the run", "[mpm][time_step]") {
+TEST_CASE("time step follows the CFL limit and a fixed step above it stops the run", "[mpm][time_step]") {
   ModelDescription m;
   m.r_nodes_m = testing::nodes(0.0, 0.1, 10);
   m.z_nodes_m = testing::nodes(0.0, 0.2, 40);  // h_min = 5 mm
