@@ -211,4 +211,12 @@ double FfpRun::soil_intrusion_m() const {
   return deepest;
 }
 
+std::size_t FfpRun::disconnected_soil_particles() const {
+  const Particles& P = simulation_.particles;
+  const MaterialGroup& soil = simulation_.groups[0];
+  std::size_t count = 0;
+  for (std::size_t p = soil.begin; p < soil.end; ++p) count += P.mass[p] < soil.disconnected_below_kg_m3 * P.volume[p];
+  return count;
+}
+
 }  // namespace ffp::mpm

@@ -128,6 +128,8 @@ class FfpRun {
   std::size_t soil_particles() const { return simulation_.groups[0].size(); }
   /// How deep the deepest soil particle is inside the outline (0 when none is).
   double soil_intrusion_m() const;
+  /// Soil particles that have lost grain contact (below the disconnection density).
+  std::size_t disconnected_soil_particles() const;
 
  private:
   FfpDescription description_;

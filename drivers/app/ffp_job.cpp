@@ -213,7 +213,7 @@ void PenetrometerJob::run(RunContext& context) {
   fields_due();
   double next_history = output.history_interval_s;
   double max_penetration = 0.0, intrusion = 0.0, dt_min = s.dt_s, peak_step = -std::numeric_limits<double>::infinity();
-  std::size_t most_contact_nodes = 0;
+  std::size_t most_contact_nodes = 0, most_disconnected = 0;
   const double end = scene_.end_time_s;
   Progress progress(std::string(cpt() ? "cpt " : "ffp ") + name_, end, context.show_progress);
   try {
@@ -227,6 +227,7 @@ void PenetrometerJob::run(RunContext& context) {
       most_contact_nodes = std::max(most_contact_nodes, ffp.state().contact_nodes);
       if (s.time_s >= next_history * (1.0 - 1e-12) || s.time_s >= end * (1.0 - 1e-12)) {
         record();
+        most_disconnected = std::max(most_disconnected, ffp.disconnected_soil_particles());
         while (next_history <= s.time_s * (1.0 + 1e-12)) next_history += output.history_interval_s;
       }
       fields_due();
@@ -304,6 +305,7 @@ void PenetrometerJob::run(RunContext& context) {
   sum["max_soil_intrusion_m"] = intrusion;
   sum["max_soil_intrusion_cells"] = intrusion / h;
   sum["contact_nodes_max"] = most_contact_nodes;
+  sum["disconnected_particles_max"] = most_disconnected;  // at the history rows
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;
   sum["penetrometer"] = ffp.deformable() ? "linear_elastic" : "rigid";
