@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "models/material_law.hpp"
 #include "models/elastic.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
@@ -37,7 +38,7 @@ struct PathSegment {
   double duration_s = 1.0;
 };
 
-using PointLaw = std::variant<LinearElastic, MohrCoulomb, StrainSofteningMohrCoulomb>;
+using PointLaw = MaterialLaw;
 /// The state of whichever law is in use (same alternative index as PointLaw).
 using PointState = std::variant<LinearElastic::State, MohrCoulomb::State, StrainSofteningMohrCoulomb::State>;
 

@@ -10,13 +10,14 @@
 #include <vector>
 
 #include "models/elastic.hpp"
+#include "models/material_law.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp::mpm {
 
-using MaterialLaw = std::variant<LinearElastic, MohrCoulomb, StrainSofteningMohrCoulomb>;
+using MaterialLaw = ffp::MaterialLaw;
 
 struct MaterialGroup {
   std::string name;

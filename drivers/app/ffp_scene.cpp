@@ -12,30 +12,6 @@ namespace {
 constexpr double kMaxLength_m = 100.0;
 constexpr double kMaxTime_s = 1e4;
 
-mpm::MaterialLaw law_of(const MaterialSpec& spec) {
-  return std::visit(
-      [](const auto& p) -> mpm::MaterialLaw {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, ElasticConstants>) {
-          return LinearElastic(p);
-        } else if constexpr (std::is_same_v<P, MohrCoulombParameters>) {
-          return MohrCoulomb(p);
-        } else {
-          return StrainSofteningMohrCoulomb(p);
-        }
-      },
-      spec.parameters);
-}
-
-/// Jaky (1944): K0 = 1 − sin φ'_p (the paper's 0.39 is 1 − sin 38°); ν/(1 − ν) for an elastic sand.
-double jaky_k0(const MaterialSpec& spec) {
-  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) return 1.0 - std::sin(mc->friction_angle_rad);
-  if (const auto* ss = std::get_if<StrainSofteningParameters>(&spec.parameters))
-    return 1.0 - std::sin(ss->friction_peak_rad);
-  const double nu = spec.elastic().poisson_ratio;
-  return nu / (1.0 - nu);
-}
-
 std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, int fallback) {
   const auto read = r.optional_numbers(key, Range::closed(1, 8), 2, 2);
   if (!read) return {fallback, fallback};
@@ -47,12 +23,12 @@ std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, i
 void read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   SceneReader material = scene.object("material", true);
   const MaterialSpec spec = read_material(material, DensityRule::required);
-  d.soil.law = law_of(spec);
+  d.soil.law = spec.law();
   d.soil.density_kg_m3 = *spec.density_kg_m3;
   SceneReader soil = scene.object("soil");
   d.soil.depth_m = soil.number("depth_m", Range::positive(kMaxLength_m, "m"), 0.4);
   d.soil.radius_m = soil.number("radius_m", Range::positive(kMaxLength_m, "m"), 0.4);
-  d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), jaky_k0(spec));
+  d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), spec.at_rest_k0());
   std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
   std::tie(d.soil.far_ppc_r, d.soil.far_ppc_z) = particles_per_cell(soil, "particles_per_cell_far", 2);
   d.soil.near_radius_m = soil.number("near_radius_m", Range::closed(0.0, d.soil.radius_m, "m (≤ radius_m)"),

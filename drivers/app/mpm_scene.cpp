@@ -47,30 +47,6 @@ mpm::Fixity read_fixity(SceneReader& b, const std::string& key, std::string_view
   return v == "free" ? mpm::Fixity::free : v == "roller" ? mpm::Fixity::roller : mpm::Fixity::fixed;
 }
 
-mpm::MaterialLaw law_of(const MaterialSpec& spec) {
-  return std::visit(
-      [](const auto& p) -> mpm::MaterialLaw {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, ElasticConstants>) {
-          return LinearElastic(p);
-        } else if constexpr (std::is_same_v<P, MohrCoulombParameters>) {
-          return MohrCoulomb(p);
-        } else {
-          return StrainSofteningMohrCoulomb(p);
-        }
-      },
-      spec.parameters);
-}
-
-/// K0 when the scene omits it: Jaky (1944) 1 − sin φ'_p for frictional laws, ν/(1 − ν) for elastic ones.
-double default_k0(const MaterialSpec& spec) {
-  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) return 1.0 - std::sin(mc->friction_angle_rad);
-  if (const auto* ss = std::get_if<StrainSofteningParameters>(&spec.parameters))
-    return 1.0 - std::sin(ss->friction_peak_rad);
-  const double nu = spec.elastic().poisson_ratio;
-  return nu / (1.0 - nu);
-}
-
 mpm::Region read_region(SceneReader& region, const std::vector<double>& r, const std::vector<double>& z) {
   if (region.has("sphere_radius_m")) {
     mpm::SphereRegion s;
@@ -134,7 +110,7 @@ MpmScene read_mpm_scene(SceneReader& scene) {
       if (existing == body.name) b.fail("name", "'" + body.name + "' is used by another body");
     SceneReader material = b.object("material", true);
     const MaterialSpec spec = read_material(material, DensityRule::required);
-    body.law = law_of(spec);
+    body.law = spec.law();
     body.density_kg_m3 = *spec.density_kg_m3;
     SceneReader region = b.object("region", true);
     body.region = read_region(region, model.r_nodes_m, model.z_nodes_m);
@@ -152,7 +128,7 @@ MpmScene read_mpm_scene(SceneReader& scene) {
       if (!model.gravity_m_s2) b.fail("initial_stress", "a K0 initial stress needs gravity_m_s2");
       SceneReader k0 = b.object("initial_stress");
       mpm::GeostaticStress g;
-      g.k0 = k0.number("k0", Range::closed(0.0, 10.0), default_k0(spec));
+      g.k0 = k0.number("k0", Range::closed(0.0, 10.0), spec.at_rest_k0());
       g.surface_z_m = k0.number("surface_z_m", Range::closed(-kMaxLength_m, kMaxLength_m, "m"));
       k0.finish("initial_stress (k0, surface_z_m)");
       body.initial_stress = g;

@@ -49,21 +49,6 @@ ControlSet all(Control c) {
   return out;
 }
 
-PointLaw law_from(const MaterialSpec& spec) {
-  return std::visit(
-      [](const auto& p) -> PointLaw {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, ElasticConstants>) {
-          return LinearElastic(p);
-        } else if constexpr (std::is_same_v<P, MohrCoulombParameters>) {
-          return MohrCoulomb(p);
-        } else {
-          return StrainSofteningMohrCoulomb(p);
-        }
-      },
-      spec.parameters);
-}
-
 /// The material as scene keys again (for the reproducer of a failed step).
 json material_json(const MaterialSpec& spec) {
   json m;
@@ -382,7 +367,7 @@ std::unique_ptr<Job> make_point_job(SceneReader& scene, const fs::path& scene_di
   MaterialSpec material = read_material(material_reader, DensityRule::not_used);
 
   PointConfig config;
-  config.law = law_from(material);
+  config.law = material.law();
   config.initial_state = initial_state_for(config.law);
 
   SceneReader path_reader = scene.object("path", true);

@@ -31,21 +31,6 @@ namespace fs = std::filesystem;
 
 constexpr long kMaxIncrements = 1'000'000;  // every increment is kept for the work integral (~160 B each)
 
-PointLaw law_of(const MaterialSpec& spec) {
-  return std::visit(
-      [](const auto& p) -> PointLaw {
-        using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, ElasticConstants>) {
-          return LinearElastic(p);
-        } else if constexpr (std::is_same_v<P, MohrCoulombParameters>) {
-          return MohrCoulomb(p);
-        } else {
-          return StrainSofteningMohrCoulomb(p);
-        }
-      },
-      spec.parameters);
-}
-
 class TriaxialJob : public Job {
  public:
   TriaxialJob(std::string name, MaterialSpec material, TriaxialTestConfig config, long output_every)
@@ -172,7 +157,7 @@ std::unique_ptr<Job> make_triaxial_job(SceneReader& scene, const fs::path&) {
   MaterialSpec material = read_material(material_reader, DensityRule::not_used);
 
   TriaxialTestConfig config;
-  config.law = law_of(material);
+  config.law = material.law();
   config.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
   config.axial_strain_max = scene.number("axial_strain_max", Range::half_open(0.0, 1.0), 0.2);
   if (!(config.axial_strain_max > 0.0)) scene.fail("axial_strain_max", "must be > 0 (compression positive)");

@@ -14,12 +14,12 @@
 
 #include "drivers/scene/scene_reader.hpp"
 #include "models/elastic.hpp"
+#include "models/material_law.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
 
 namespace ffp {
 
-using MaterialParameters = std::variant<ElasticConstants, MohrCoulombParameters, StrainSofteningParameters>;
 
 struct MaterialSpec {
   std::string model;  ///< linear_elastic | mohr_coulomb | ssmc
@@ -27,6 +27,8 @@ struct MaterialSpec {
   std::optional<double> density_kg_m3;  ///< present only when the kind asked for it
 
   const ElasticConstants& elastic() const;
+  MaterialLaw law() const { return make_law(parameters); }
+  double at_rest_k0() const { return ffp::at_rest_k0(parameters); }
 };
 
 enum class DensityRule { not_used, required };
