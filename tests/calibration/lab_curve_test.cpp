@@ -10,27 +10,16 @@
 
 #include "calibration/lab_curve.hpp"
 #include "drivers/scene/scene_error.hpp"
+#include "tests/support/scratch.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
-  fs::path path;
-  Scratch() {
-    std::random_device seed;
-    path = fs::temp_directory_path() / ("ffp-lab-" + std::to_string(seed()));
-    fs::create_directories(path);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
-  }
+/// This file's scratch folders are named ffp-lab-….
+struct Scratch : ffp::test_support::Scratch {
+  Scratch() : ffp::test_support::Scratch("ffp-lab") {}
 };
 
 /// The message of the SceneError reading `text` throws ("" if none).

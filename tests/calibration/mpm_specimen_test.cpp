@@ -14,12 +14,21 @@
 
 #include "calibration/mpm_triaxial_specimen.hpp"
 #include "calibration/softening_calibration.hpp"
+#include "tests/support/scratch.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
+
+/// This file's scratch folders are named ffp-mpm-specimen-….
+struct Scratch : ffp::test_support::Scratch {
+  Scratch() : ffp::test_support::Scratch("ffp-mpm-specimen") {}
+};
+
+using ffp::test_support::run_ffp;
+using ffp::test_support::read_text;
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
@@ -42,33 +51,6 @@ MpmTriaxialConfig two_cm() {
 
 double work_of(const MpmTriaxialResult& r, const TriaxialSpecimen& specimen) {
   return dissipated_work_J(r.curve.axial_strain, r.curve.deviatoric_stress_Pa, specimen, 0.0, 0.2);
-}
-
-struct Scratch {
-  fs::path path;
-  Scratch() {
-    std::random_device seed;
-    path = fs::temp_directory_path() / ("ffp-mpm-specimen-" + std::to_string(seed()));
-    fs::create_directories(path);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
-int run_ffp(const Scratch& dir, const std::string& scene, const std::string& extra = "") {
-  const std::string command = "cd '" + dir.path.string() + "' && '" + FFP_BINARY + "' run '" + scene +
-                              "' --out out --quiet " + extra + " > log.txt 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 const std::string kScenes = std::string(FFP_SOURCE_DIR) + "/data/scenes/";

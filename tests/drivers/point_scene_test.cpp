@@ -9,35 +9,19 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/scratch.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
 
-struct ScratchDirectory {
-  fs::path path;
-  ScratchDirectory() {
-    std::random_device seed;
-    path = fs::temp_directory_path() / ("ffp-point-" + std::to_string(seed()));
-    fs::create_directories(path);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
-  }
+/// This file's scratch folders are named ffp-point-….
+struct ScratchDirectory : ffp::test_support::Scratch {
+  ScratchDirectory() : ffp::test_support::Scratch("ffp-point") {}
 };
 
-/// `ffp run scene --out out --quiet` inside the scratch directory; the exit code.
-int run_ffp(const ScratchDirectory& dir, const std::string& scene, const std::string& extra = "") {
-  const std::string command = "cd '" + dir.path.string() + "' && '" + FFP_BINARY + "' run '" + scene +
-                              "' --out out --quiet " + extra + " > log.txt 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using ffp::test_support::run_ffp;
 
 json read_json(const fs::path& file) {
   std::ifstream in(file);

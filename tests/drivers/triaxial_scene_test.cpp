@@ -11,38 +11,20 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/scratch.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
 
-struct Scratch {
-  fs::path path;
-  Scratch() {
-    std::random_device seed;
-    path = fs::temp_directory_path() / ("ffp-triaxial-" + std::to_string(seed()));
-    fs::create_directories(path);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
+/// This file's scratch folders are named ffp-triaxial-….
+struct Scratch : ffp::test_support::Scratch {
+  Scratch() : ffp::test_support::Scratch("ffp-triaxial") {}
 };
 
-/// `ffp run scene --out out --quiet ARGS` inside the scratch directory; the exit code.
-int run_ffp(const Scratch& dir, const std::string& scene, const std::string& extra = "") {
-  const std::string command = "cd '" + dir.path.string() + "' && '" + FFP_BINARY + "' run '" + scene +
-                              "' --out out --quiet " + extra + " > log.txt 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ffp::test_support::run_ffp;
+using ffp::test_support::read_text;
 
 double n_phi(double phi_deg) {
   const double s = std::sin(phi_deg * 3.14159265358979323846 / 180.0);
