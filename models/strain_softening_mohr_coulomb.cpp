@@ -27,7 +27,10 @@ MohrCoulombStrength StrainSofteningMohrCoulomb::strength(const Peaks& peaks, dou
   // Yerro et al. (2016): x = x_r + (x_p − x_r) exp(−η ε_d^p) for φ', c' and ψ.
   const double phi = p.friction_residual_rad + (peaks.friction_rad - p.friction_residual_rad) * decay;
   const double cohesion = p.cohesion_residual_Pa + (p.cohesion_peak_Pa - p.cohesion_residual_Pa) * decay;
-  const double psi = p.dilatancy_residual_rad + (peaks.dilatancy_rad - p.dilatancy_residual_rad) * decay;
+  // Dilatancy only dies out towards the critical state: where Bolton's ψ_p has
+  // fallen below ψ_r (loose sand, high p'), ψ stays at ψ_p instead of growing.
+  const double psi_residual = std::min(p.dilatancy_residual_rad, peaks.dilatancy_rad);
+  const double psi = psi_residual + (peaks.dilatancy_rad - psi_residual) * decay;
   return MohrCoulombStrength::of(phi, std::min(psi, phi), cohesion);
 }
 

@@ -2,8 +2,8 @@
 /// against its run time (drivers/integration_study.hpp), as CSV tables and
 /// log-log / heat-map PNGs.
 ///
-/// Scene: material (an ssmc material; the Mohr-Coulomb runs use its peak
-/// φ', ψ, c'), cell_pressure_kPa, axial_strain_max, strain_rate_per_s,
+/// Scene: material (an ssmc material with a constant ψ_p; the Mohr-Coulomb
+/// runs use its peak φ', ψ, c'), cell_pressure_kPa, axial_strain_max, strain_rate_per_s,
 /// increments [list], reference_increments, min_timing_s, and maps
 /// {points_x, points_y, max_trial_over_yield_strain, reference_substeps}.
 #include <cmath>
@@ -160,6 +160,11 @@ std::unique_ptr<Job> make_integration_error_job(SceneReader& scene, const fs::pa
   const MaterialSpec material = read_material(material_reader, DensityRule::not_used);
   if (material.model != "ssmc")
     scene.fail("material.model", "must be ssmc here (the Mohr-Coulomb runs use its peak strength)");
+  // Bolton's ψ_p follows p', which a Mohr-Coulomb comparison cannot: it would
+  // silently run with ψ = 0.
+  if (std::get<StrainSofteningParameters>(material.parameters).relative_density)
+    scene.fail("material.relative_density",
+               "not allowed here: the Mohr-Coulomb runs need a constant dilatancy; give psi_peak_deg instead");
   TriaxialErrorStudy study;
   study.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
   study.axial_strain_max = scene.number("axial_strain_max", Range::open(0.0, 1.0), 0.2);

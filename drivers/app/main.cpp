@@ -22,7 +22,8 @@ Commands:
   sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR]
         Run every combination as an independent process; DIR/sweep.csv.
   report [--out DIR] [--jobs N]
-        Run the validation study (cached) and write DIR/report.md with figures.
+        Run the validation study (cached) and write DIR/report.md with figures;
+        N runs side by side (default: one per core).
   bench
         Measure the speed of the constitutive updates and the MPM step.
   --help, --version

@@ -11,6 +11,7 @@
 ///   output_every_increments
 /// Axial is component 22 (z in axisymmetry); shear strains are tensor
 /// components ε_ij except simple_shear's shear_strain_max (engineering γ).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -84,6 +85,14 @@ struct PathSpec {
   std::string type;
   std::vector<PathSegment> segments;
   std::optional<Voigt> natural_initial_stress;  ///< what the path starts from unless the scene says otherwise
+  /// A CSV path's first row for its stress-controlled components (Pa, tension
+  /// positive), checked against the start stress once that is known.
+  struct TableStart {
+    std::string where;
+    ControlSet control{};
+    Voigt stress = Voigt::Zero();
+  };
+  std::optional<TableStart> table_start;
 };
 
 Control control_named(SceneReader& reader, const std::string& key, std::size_t index, const std::string& name) {
@@ -119,9 +128,12 @@ std::vector<PathSegment> read_segments(SceneReader& path) {
 }
 
 /// A CSV path: a column time_s and, per component ij, either strain_ij or
-/// stress_ij_kPa (compression positive). Row 0 is the start; every later row is
-/// the target of one leg of `increments_per_row` increments.
-std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir) {
+/// stress_ij_kPa (compression positive). Row 0 is the start: strains are
+/// measured from it, and its stresses must be the start stress (checked by the
+/// caller through `start`), so a lab record can be fed as it is. Every later
+/// row is the target of one leg of `increments_per_row` increments.
+std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir,
+                                    std::optional<PathSpec::TableStart>& start) {
   const std::string file = path.text("table_csv");
   const int per_row = path.integer("increments_per_row", 1, 1'000'000, 1);
   const fs::path resolved = fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file;
@@ -140,6 +152,10 @@ std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir
   }
   const std::vector<double>& time = table.column("time_s");
   if (time.size() < 2) throw SceneError(where + ": needs at least two rows (the start and one target)");
+  PathSpec::TableStart first{where, control, Voigt::Zero()};
+  for (int i = 0; i < 6; ++i)
+    if (control[i] == Control::stress) first.stress[i] = -1e3 * (*columns[i])[0];
+  start = first;
   std::vector<PathSegment> out;
   for (std::size_t row = 1; row < time.size(); ++row) {
     if (!(time[row] > time[row - 1]))
@@ -147,7 +163,8 @@ std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir
     PathSegment segment;
     segment.control = control;
     for (int i = 0; i < 6; ++i)
-      segment.target[i] = control[i] == Control::strain ? -(*columns[i])[row] : -1e3 * (*columns[i])[row];
+      segment.target[i] = control[i] == Control::strain ? -((*columns[i])[row] - (*columns[i])[0])
+                                                        : -1e3 * (*columns[i])[row];
     segment.increments = per_row;
     segment.duration_s = time[row] - time[row - 1];
     out.push_back(segment);
@@ -163,7 +180,7 @@ PathSpec read_path(SceneReader& path, const fs::path& scene_dir) {
   if (spec.type == "general") {
     if (path.has("segments") == path.has("table_csv"))
       path.fail("segments", "give either segments (a list of legs) or table_csv (a CSV file), exactly one");
-    spec.segments = path.has("segments") ? read_segments(path) : read_table(path, scene_dir);
+    spec.segments = path.has("segments") ? read_segments(path) : read_table(path, scene_dir, spec.table_start);
     path.finish(context);
     return spec;
   }
@@ -209,6 +226,21 @@ PathSpec read_path(SceneReader& path, const fs::path& scene_dir) {
   spec.segments.push_back(segment);
   path.finish(context);
   return spec;
+}
+
+/// A table whose first row is not the start stress would jump to the second
+/// row's stress in one leg without saying so; refuse it instead.
+void check_table_start(const PathSpec::TableStart& table, const Voigt& initial_stress) {
+  const double scale = std::max({1.0, table.stress.cwiseAbs().maxCoeff(), initial_stress.cwiseAbs().maxCoeff()});
+  for (int i = 0; i < 6; ++i) {
+    if (table.control[i] != Control::stress) continue;
+    if (std::abs(table.stress[i] - initial_stress[i]) <= 1e-9 * scale) continue;
+    std::ostringstream message;
+    message << table.where << ": row 1: stress_" << kComponents[i] << "_kPa = " << -1e-3 * table.stress[i]
+            << " is not the start stress " << -1e-3 * initial_stress[i]
+            << " kPa; start the table at initial_stress_kPa/initial_pressure_kPa or change them";
+    throw SceneError(message.str());
+  }
 }
 
 class PointJob : public Job {
@@ -384,6 +416,7 @@ std::unique_ptr<Job> make_point_job(SceneReader& scene, const fs::path& scene_di
     const double p = scene.number("initial_pressure_kPa", Range::closed(-kMaxStress_kPa, kMaxStress_kPa, "kPa"), natural);
     config.initial_stress = stress_from_kPa({p, p, p, 0, 0, 0});
   }
+  if (path.table_start) check_table_start(*path.table_start, config.initial_stress);
 
   if (scene.has("initial_state")) {
     if (!std::holds_alternative<StrainSofteningMohrCoulomb>(config.law))

@@ -1,4 +1,5 @@
 /// `ffp report`: run the validation studies (cached) and write report.md.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -47,7 +48,10 @@ int command_report(const Arguments& args) {
     fs::path cache = "results/cache";
     fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
     std::string only;
-    int jobs = 1;
+    // One run per core: most runs are small or single-threaded (the MPM
+    // calibration specimens), so runs side by side finish the study sooner than
+    // one run at a time on two OpenMP threads (measured: 22 against 37 min here).
+    int jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> std::string {

@@ -65,6 +65,42 @@ TEST_CASE("point scene: a CSV table path gives the same peak as the named path",
   CHECK(summary["final_axial_strain"].get<double>() == Approx(0.05).epsilon(1e-14));
 }
 
+TEST_CASE("point scene: a CSV table's strains count from its first row, and its first stresses must be the start",
+          "[point][scene]") {
+  ScratchDirectory dir;
+  // A lab record whose strain gauge read 0.01 at the start: the 0.05 leg is 0.04.
+  dir.write("offset.csv",
+            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
+            "0,1.72,0.01,1.72,0,0,0\n"
+            "100,1.72,0.05,1.72,0,0,0\n");
+  json scene = {{"kind", "point"},
+                {"name", "offset"},
+                {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 50}}},
+                {"initial_pressure_kPa", 1.72},
+                {"path", {{"type", "general"}, {"table_csv", "offset.csv"}, {"increments_per_row", 200}}}};
+  dir.write("scene.json", scene.dump());
+  REQUIRE(run_ffp(dir, "scene.json") == 0);
+  const json summary = read_json(dir.path / "out" / "summary.json");
+  CHECK(summary["final_axial_strain"].get<double>() == Approx(0.04).epsilon(1e-14));
+
+  // Starting the table at 3 kPa while the specimen starts at 1.72 kPa would be a
+  // silent jump in the first leg.
+  dir.write("jump.csv",
+            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
+            "0,3,0,1.72,0,0,0\n"
+            "100,3,0.05,1.72,0,0,0\n");
+  scene["path"]["table_csv"] = "jump.csv";
+  scene["name"] = "jump";
+  dir.write("jump.json", scene.dump());
+  fs::remove_all(dir.path / "out");
+  CHECK(run_ffp(dir, "jump.json") == 2);
+  std::ifstream log(dir.path / "log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  CHECK(text.find("path.table_csv") != std::string::npos);
+  CHECK(text.find("stress_11_kPa") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.path / "out"));
+}
+
 TEST_CASE("point scene: bad input names the key and exits with 2", "[point][scene]") {
   ScratchDirectory dir;
   const std::string scene = std::string(FFP_SOURCE_DIR) + "/data/scenes/point_triaxial_mc.json";

@@ -86,3 +86,15 @@ TEST_CASE("triaxial scene: the paper's SSMC softens from the peak and the output
   const std::string history = read_text(dir.path / "out" / "history.csv");
   CHECK(std::count(history.begin(), history.end(), '\n') == 22);
 }
+
+TEST_CASE("integration_error scene: a Bolton material is refused, its MC comparison would drop ψ", "[integration][scene]") {
+  Scratch dir;
+  std::ifstream in(kScenes + "integration_error.json");
+  json scene = json::parse(in);
+  scene["material"].erase("psi_peak_deg");
+  scene["material"]["relative_density"] = 0.15;
+  dir.write("bolton.json", scene.dump());
+  CHECK(run_ffp(dir, "bolton.json") == 2);
+  CHECK(read_text(dir.path / "log.txt").find("material.relative_density") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.path / "out"));
+}

@@ -129,6 +129,28 @@ TEST_CASE("Bolton's ψ_p is capped at the current friction angle", "[ssmc][bolto
   CHECK(s.dilatancy_angle_rad < s.friction_angle_rad);
 }
 
+TEST_CASE("ψ never grows with softening, even where Bolton's ψ_p is below ψ_r", "[ssmc][bolton]") {
+  StrainSofteningParameters p = paper_sand();
+  p.relative_density = 0.15;
+  p.dilatancy_residual_rad = 2 * kDeg;
+  const StrainSofteningMohrCoulomb law(p);
+  StrainSofteningMohrCoulomb::State state;
+  // At 1.72 kPa I_R = 0.15(10 − ln 1.72) − 1 = 0.42: ψ_p = 7.2° > ψ_r, the usual decay to 2°.
+  const double low_p_peak = bolton_peak_dilatancy_rad(0.15, 1.72);
+  REQUIRE(low_p_peak > 2 * kDeg);
+  CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad == Approx(low_p_peak).epsilon(1e-12));
+  // At 100 kPa I_R = 0.15(10 − ln 100) − 1 < 0 is clamped to 0: ψ_p = 0 < ψ_r, and ψ stays 0.
+  REQUIRE(bolton_peak_dilatancy_rad(0.15, 100.0) == 0.0);
+  for (double kappa : {0.0, 0.05, 0.2, 5.0}) {
+    state.plastic_deviatoric_strain = kappa;
+    CAPTURE(kappa);
+    CHECK(law.current_strength(state, 100e3).dilatancy_angle_rad == Approx(0.0).margin(1e-15));
+    CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad <= low_p_peak * (1 + 1e-12));
+  }
+  state.plastic_deviatoric_strain = 5.0;
+  CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad == Approx(2 * kDeg).epsilon(1e-12));
+}
+
 TEST_CASE("SSMC with η = 0 is Mohr-Coulomb with the peak strength", "[ssmc]") {
   StrainSofteningParameters p = paper_sand();
   p.softening_factor = 0.0;
