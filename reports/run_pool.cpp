@@ -1,5 +1,6 @@
 #include "reports/run_pool.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -114,9 +115,11 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   std::vector<std::size_t> pending;
   std::map<std::string, std::size_t> first_with_key;  // studies may share a run: run it once
   std::vector<std::pair<std::size_t, std::size_t>> duplicates;
+  std::vector<double> expected_wall_s(requests.size());  // a shared run keeps the largest estimate
   for (std::size_t i = 0; i < requests.size(); ++i) {
     const std::string key = run_key(requests[i], identity);
     const auto [it, inserted] = first_with_key.emplace(key, i);
+    expected_wall_s[it->second] = std::max(expected_wall_s[it->second], requests[i].expected_wall_s);
     if (!inserted) {
       duplicates.emplace_back(i, it->second);
       continue;
@@ -129,6 +132,9 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
       pending.push_back(i);
     }
   }
+  std::stable_sort(pending.begin(), pending.end(), [&](std::size_t a, std::size_t b) {
+    return expected_wall_s[a] > expected_wall_s[b];
+  });
   const std::size_t cached = requests.size() - duplicates.size() - pending.size();
   std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
 

@@ -12,6 +12,9 @@ struct RunRequest {
   std::string label;                    ///< shown in progress and tables
   std::filesystem::path scene_file;
   std::vector<std::string> overrides;   ///< "key=value", as for --set
+  /// A rough cost (a wall time measured here) used only to start the longest
+  /// runs first, so that no long run is left alone at the end on one core.
+  double expected_wall_s = 0.0;
 };
 
 struct RunOutcome {
@@ -32,7 +35,8 @@ std::string program_identity(const std::filesystem::path& binary, const std::str
 
 /// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/
 /// (key: run_key with program_identity(ffp_binary, program_version)),
-/// skipping those whose summary.json already exists. Progress lines go to stderr.
+/// skipping those whose summary.json already exists; the longest expected runs
+/// start first, the others in the given order. Progress lines go to stderr.
 std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const std::filesystem::path& cache_root, const std::string& program_version,
                                 int jobs);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -88,4 +89,22 @@ TEST_CASE("a sweep runs each distinct combination once and a repeated sweep come
   std::ifstream log(s.dir / "log");
   const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
   CHECK(text.find("0 to do, 2 cached") != std::string::npos);
+}
+
+TEST_CASE("the runs expected to take longest start first, the others in the given order", "[reports]") {
+  Scratch s;
+  const fs::path scene = fs::path(FFP_SOURCE_DIR) / "data/scenes/triaxial_mc.json";
+  std::vector<RunRequest> requests = {{"first", scene, {"material.phi_peak_deg=30"}},
+                                      {"long", scene, {"material.phi_peak_deg=35"}},
+                                      {"third", scene, {"material.phi_peak_deg=40"}},
+                                      {"long again", scene, {"material.phi_peak_deg=35"}}};
+  requests[3].expected_wall_s = 100;  // the estimate of a shared run counts for it
+  const auto outcomes = ffp::run_all(FFP_BINARY, requests, s.dir / "cache", "v1", 1);
+  REQUIRE(outcomes.size() == 4);
+  for (const auto& o : outcomes) REQUIRE(o.exit_code == 0);
+  // One at a time: the order they started is the order their summaries were written.
+  auto written = [&](std::size_t i) { return fs::last_write_time(outcomes[i].out_dir / "summary.json"); };
+  CHECK(written(1) < written(0));
+  CHECK(written(0) < written(2));
+  CHECK(outcomes[3].out_dir == outcomes[1].out_dir);
 }
