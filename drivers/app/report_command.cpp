@@ -50,7 +50,8 @@ int command_report(const Arguments& args) {
     std::string only;
     // One run per core: most runs are small or single-threaded (the MPM
     // calibration specimens), so runs side by side finish the study sooner than
-    // one run at a time on two OpenMP threads (measured: 22 against 37 min here).
+    // one run at a time on two OpenMP threads (the report took 24 against 37 min
+    // on a fresh clone here, with the longest runs started first).
     int jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
