@@ -28,6 +28,17 @@ json read_json(const fs::path& file) {
   return json::parse(in);
 }
 
+/// A point scene on a general path read from `csv`: MC sand (φ = 50°) starting at 1.72 kPa.
+json table_path_scene(const std::string& name, const std::string& csv) {
+  return {{"kind", "point"},
+          {"name", name},
+          {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 50}}},
+          {"initial_pressure_kPa", 1.72},
+          {"path", {{"type", "general"}, {"table_csv", csv}, {"increments_per_row", 200}}}};
+}
+
+constexpr const char* kTableHeader = "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n";
+
 double n_phi(double phi_deg) {
   const double s = std::sin(phi_deg * 3.14159265358979323846 / 180.0);
   return (1 + s) / (1 - s);
@@ -49,16 +60,10 @@ TEST_CASE("point scene: drained triaxial peak equals σ3(Nφ−1) and the output
 
 TEST_CASE("point scene: a CSV table path gives the same peak as the named path", "[point][scene]") {
   ScratchDirectory dir;
-  dir.write("path.csv",
-            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
-            "0,1.72,0,1.72,0,0,0\n"
-            "100,1.72,0.05,1.72,0,0,0\n");
-  const json scene = {{"kind", "point"},
-                      {"name", "table"},
-                      {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 50}}},
-                      {"initial_pressure_kPa", 1.72},
-                      {"path", {{"type", "general"}, {"table_csv", "path.csv"}, {"increments_per_row", 200}}}};
-  dir.write("scene.json", scene.dump());
+  dir.write("path.csv", std::string(kTableHeader) +
+                            "0,1.72,0,1.72,0,0,0\n"
+                            "100,1.72,0.05,1.72,0,0,0\n");
+  dir.write("scene.json", table_path_scene("table", "path.csv").dump());
   REQUIRE(run_ffp(dir, "scene.json") == 0);
   const json summary = read_json(dir.path / "out" / "summary.json");
   CHECK(summary["peak_q_kPa"].get<double>() == Approx(1.72 * (n_phi(50) - 1)).epsilon(1e-8));
@@ -69,33 +74,23 @@ TEST_CASE("point scene: a CSV table's strains count from its first row, and its 
           "[point][scene]") {
   ScratchDirectory dir;
   // A lab record whose strain gauge read 0.01 at the start: the 0.05 leg is 0.04.
-  dir.write("offset.csv",
-            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
-            "0,1.72,0.01,1.72,0,0,0\n"
-            "100,1.72,0.05,1.72,0,0,0\n");
-  json scene = {{"kind", "point"},
-                {"name", "offset"},
-                {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 50}}},
-                {"initial_pressure_kPa", 1.72},
-                {"path", {{"type", "general"}, {"table_csv", "offset.csv"}, {"increments_per_row", 200}}}};
-  dir.write("scene.json", scene.dump());
+  dir.write("offset.csv", std::string(kTableHeader) +
+                              "0,1.72,0.01,1.72,0,0,0\n"
+                              "100,1.72,0.05,1.72,0,0,0\n");
+  dir.write("scene.json", table_path_scene("offset", "offset.csv").dump());
   REQUIRE(run_ffp(dir, "scene.json") == 0);
   const json summary = read_json(dir.path / "out" / "summary.json");
   CHECK(summary["final_axial_strain"].get<double>() == Approx(0.04).epsilon(1e-14));
 
   // Starting the table at 3 kPa while the specimen starts at 1.72 kPa would be a
   // silent jump in the first leg.
-  dir.write("jump.csv",
-            "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n"
-            "0,3,0,1.72,0,0,0\n"
-            "100,3,0.05,1.72,0,0,0\n");
-  scene["path"]["table_csv"] = "jump.csv";
-  scene["name"] = "jump";
-  dir.write("jump.json", scene.dump());
+  dir.write("jump.csv", std::string(kTableHeader) +
+                            "0,3,0,1.72,0,0,0\n"
+                            "100,3,0.05,1.72,0,0,0\n");
+  dir.write("jump.json", table_path_scene("jump", "jump.csv").dump());
   fs::remove_all(dir.path / "out");
   CHECK(run_ffp(dir, "jump.json") == 2);
-  std::ifstream log(dir.path / "log.txt");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  const std::string text = ffp::test_support::read_text(dir.path / "log.txt");
   CHECK(text.find("path.table_csv") != std::string::npos);
   CHECK(text.find("stress_11_kPa") != std::string::npos);
   CHECK_FALSE(fs::exists(dir.path / "out"));
