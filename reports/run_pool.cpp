@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/output/interrupt.hpp"
+#include "drivers/output/run_directory.hpp"
 #include "drivers/scene/scene_reader.hpp"
 
 extern char** environ;
@@ -125,7 +126,10 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
       continue;
     }
     outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + key);
-    if (fs::exists(outcomes[i].out_dir / "summary.json")) {
+    // Complete when its manifest is there (written last, then the folder renamed
+    // into place); summary.json alone marks a run cached before manifests.
+    if (fs::exists(outcomes[i].out_dir / kOutputManifest) ||
+        fs::exists(outcomes[i].out_dir / "summary.json")) {
       outcomes[i].cached = true;
       outcomes[i].exit_code = 0;
     } else {
@@ -179,11 +183,14 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   // (spinning threads on an oversubscribed machine slow everything down),
   // unless the user chose OMP_NUM_THREADS.
   std::vector<std::string> environment;
-  for (char** e = environ; *e != nullptr; ++e) environment.emplace_back(*e);
+  for (char** e = environ; *e != nullptr; ++e)
+    if (std::string_view(*e).rfind("FFP_RUN_POOL_PID=", 0) != 0) environment.emplace_back(*e);
   if (std::getenv("OMP_NUM_THREADS") == nullptr) {
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     environment.push_back("OMP_NUM_THREADS=" + std::to_string(std::max<std::size_t>(1, cores / parallel)));
   }
+  // The runs stop when this process dies, however it dies (see command_run).
+  environment.push_back("FFP_RUN_POOL_PID=" + std::to_string(::getpid()));
   for (auto& e : environment) child_environ.push_back(e.data());
   child_environ.push_back(nullptr);
   while (finished < pending.size()) {

@@ -48,6 +48,7 @@ int command_report(const Arguments& args) {
     fs::path cache = "results/cache";
     fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
     std::string only;
+    bool force = false;
     // One run per core: most runs are small or single-threaded (the MPM
     // calibration specimens), so runs side by side finish the study sooner than
     // one run at a time on two OpenMP threads (the report took 24 against 37 min
@@ -65,6 +66,8 @@ int command_report(const Arguments& args) {
         cache = value();
       } else if (a == "--scenes") {
         scenes = value();
+      } else if (a == "--force") {
+        force = true;
       } else if (a == "--only") {
         only = value();
       } else if (a == "--jobs") {
@@ -76,6 +79,10 @@ int command_report(const Arguments& args) {
       }
     }
     if (!fs::is_directory(scenes)) throw SceneError("--scenes: '" + scenes.string() + "' is not a folder of scenes");
+
+    // Refuse a folder of the user's before hours of runs, not after.
+    require_replaceable(out, "--out", force);
+    claim_persistent_folder(cache, "--cache", "run cache", force);
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<Study> studies = validation_studies(scenes);
@@ -109,7 +116,7 @@ int command_report(const Arguments& args) {
       }
     }
 
-    RunDirectory directory(out);
+    RunDirectory directory(out, "--out", force);
     fs::create_directories(directory.path() / "figures");
     fs::create_directories(directory.path() / "tables");
     Markdown document;
@@ -137,7 +144,17 @@ int command_report(const Arguments& args) {
       }
       document.heading(2, studies[k].title);
       StudyOutput output{document, directory.path() / "figures", "figures", directory.path() / "tables"};
-      studies[k].write(mine, output);
+      // A study whose runs failed in a way its writer did not foresee is marked
+      // failed here; every other study is still written.
+      try {
+        studies[k].write(mine, output);
+      } catch (const Interrupted&) {
+        throw;
+      } catch (const std::exception& e) {
+        ++failures;
+        document.paragraph("**This study could not be written** (a run above failed or gave an incomplete "
+                           "summary): " + std::string(e.what()));
+      }
     }
 
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -146,7 +163,7 @@ int command_report(const Arguments& args) {
                        "report took " + fixed(total, 1) + " s to assemble, including the runs made now.");
     document.table({"run", "status", "wall time [s]", "this time", "folder (in " + cache.string() + ")"}, run_rows);
     write_file_atomically(directory.path() / "report.md", document.str());
-    directory.commit();
+    directory.commit("report");
     std::fprintf(stderr, "wrote %s (%.1f s)%s\n", (out / "report.md").string().c_str(), total,
                  failures ? (" — " + std::to_string(failures) + " run(s) FAILED").c_str() : "");
     return failures == 0 ? 0 : 1;

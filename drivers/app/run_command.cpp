@@ -8,6 +8,11 @@
 #include <optional>
 #include <thread>
 
+#include <csignal>
+#include <cstdlib>
+#include <sys/prctl.h>
+#include <unistd.h>
+
 #include "drivers/app/commands.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/version.hpp"
@@ -28,6 +33,7 @@ struct SceneArguments {
   std::vector<std::string> overrides;
   std::optional<fs::path> out;
   bool quiet = false;
+  bool force = false;  ///< replace an --out folder that holds files ffp did not write
 };
 
 SceneArguments parse_scene_arguments(const Arguments& args, const char* command, bool allow_out) {
@@ -44,6 +50,8 @@ SceneArguments parse_scene_arguments(const Arguments& args, const char* command,
       parsed.overrides.push_back(a.substr(6));
     } else if (allow_out && a == "--out") {
       parsed.out = value("--out");
+    } else if (allow_out && a == "--force") {
+      parsed.force = true;
     } else if (a == "--quiet" || a == "-q") {
       parsed.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -80,6 +88,16 @@ LoadedScene load(const SceneArguments& a) {
   return loaded;
 }
 
+/// A run started by a run pool (ffp report, ffp sweep) stops when the pool's
+/// process dies, even by SIGKILL: SIGTERM then removes its temporary output,
+/// so no orphan keeps writing into a cache that a rerun is filling again.
+void stop_with_parent_run_pool() {
+  const char* parent = std::getenv("FFP_RUN_POOL_PID");
+  if (parent == nullptr) return;
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (std::to_string(::getppid()) != parent) std::raise(SIGTERM);  // the pool died before prctl
+}
+
 int report_error(const std::exception& e, int code) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return code;
@@ -88,11 +106,12 @@ int report_error(const std::exception& e, int code) {
 }  // namespace
 
 int command_run(const Arguments& args) {
+  stop_with_parent_run_pool();
   try {
     const SceneArguments a = parse_scene_arguments(args, "run", true);
     LoadedScene loaded = load(a);
     const fs::path out = a.out.value_or(fs::path("results") / loaded.echo["name"].get<std::string>());
-    RunDirectory directory(out);
+    RunDirectory directory(out, "--out", a.force);
     RunContext context;
     context.out_dir = directory.path();
     context.scene_dir = loaded.scene_dir;
@@ -108,7 +127,7 @@ int command_run(const Arguments& args) {
     summary["scene"] = loaded.echo;
     write_file_atomically(directory.path() / "summary.json", summary.dump(2) + "\n");
     throw_if_interrupted();
-    directory.commit();
+    directory.commit(loaded.echo["kind"].get<std::string>() + " run");
     if (!a.quiet) std::fprintf(stderr, "wrote %s (%.2f s)\n", out.string().c_str(), wall);
     return 0;
   } catch (const SceneError& e) {

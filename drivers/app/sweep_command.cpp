@@ -58,6 +58,7 @@ int command_sweep(const Arguments& args) {
     std::vector<std::pair<std::string, std::vector<std::string>>> axes;
     fs::path out;
     int jobs = 1;
+    bool force = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> std::string {
@@ -73,6 +74,8 @@ int command_sweep(const Arguments& args) {
         const std::string n = value();
         jobs = std::atoi(n.c_str());
         if (jobs < 1 || jobs > 256) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 256]");
+      } else if (a == "--force") {
+        force = true;
       } else if (a == "--out") {
         out = value();
       } else if (!a.empty() && a[0] == '-') {
@@ -112,6 +115,10 @@ int command_sweep(const Arguments& args) {
       requests.push_back({label, scene_file, c});
     }
     if (out.empty()) out = fs::path("results") / (name + "-sweep");
+    claim_persistent_folder(out, "--out", "sweep", force);
+    claim_persistent_folder(out / "runs", "--out", "run cache", force);
+    // A table from an earlier sweep into this folder must not pass for this one's.
+    fs::remove(out / "sweep.csv");
     std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), jobs, out.string().c_str());
     const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", FFP_VERSION, jobs);
 

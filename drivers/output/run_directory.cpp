@@ -1,11 +1,19 @@
 #include "drivers/output/run_directory.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <csignal>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "drivers/output/interrupt.hpp"
 
@@ -14,21 +22,160 @@ namespace ffp {
 namespace fs = std::filesystem;
 
 namespace {
-fs::path sibling(const fs::path& target, const std::string& tag) {
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+
+std::string hidden_prefix(const fs::path& target, const std::string& tag) {
   std::string name = ".";  // built step by step: GCC 12 warns falsely (-Wrestrict) on "." + string
   name += target.filename().string();
   name += '.';
   name += tag;
   name += '-';
-  name += std::to_string(::getpid());
-  return parent / name;
+  return name;
 }
+
+fs::path sibling(const fs::path& target, const std::string& tag) {
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  return parent / (hidden_prefix(target, tag) + std::to_string(::getpid()));
+}
+
+bool process_alive(long pid) { return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH); }
+
+/// Every entry under `folder`, relative, sorted (the manifest itself left out).
+std::vector<std::string> entries_under(const fs::path& folder) {
+  std::vector<std::string> entries;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    const std::string relative = fs::relative(it->path(), folder).generic_string();
+    if (relative != kOutputManifest) entries.push_back(relative);
+  }
+  std::sort(entries.begin(), entries.end());
+  return entries;
+}
+
+/// The entries a folder's manifest lists; nullopt-like empty set plus false when it has none (or it is unreadable).
+bool read_manifest(const fs::path& folder, std::set<std::string>& listed) {
+  std::ifstream in(folder / kOutputManifest);
+  if (!in) return false;
+  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  if (!manifest.is_object() || !manifest.contains("files") || !manifest["files"].is_array()) return false;
+  for (const auto& f : manifest["files"])
+    if (f.is_string()) listed.insert(f.get<std::string>());
+  return true;
+}
+
+std::string describe_foreign(const std::vector<std::string>& foreign) {
+  std::string text = "'" + foreign.front() + "'";
+  if (foreign.size() > 1) text += " and " + std::to_string(foreign.size() - 1) + " more";
+  return text;
+}
+
+/// "<label>-<16 hex>" (a run folder of the run cache) or ".<label>.log".
+bool looks_like_cache_entry(const fs::directory_entry& entry) {
+  const std::string name = entry.path().filename().string();
+  if (entry.is_regular_file()) return name.size() > 5 && name.front() == '.' && name.ends_with(".log");
+  if (!entry.is_directory()) return false;
+  if (name.front() == '.') return name.find(".tmp-") != std::string::npos || name.find(".old-") != std::string::npos;
+  if (name.size() < 18 || name[name.size() - 17] != '-') return false;
+  return std::all_of(name.end() - 16, name.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+}
+
+/// A run or report folder written before manifests existed: its summary.json
+/// names the ffp version, or its report.md is the validation report.
+bool written_before_manifests(const fs::path& folder) {
+  std::ifstream summary(folder / "summary.json");
+  if (summary) {
+    const nlohmann::json s = nlohmann::json::parse(summary, nullptr, false);
+    return s.is_object() && s.contains("ffp_version");
+  }
+  std::ifstream report(folder / "report.md");
+  std::string first_line;
+  return report && std::getline(report, first_line) && first_line == "# ffp validation report";
+}
+
 }  // namespace
 
-RunDirectory::RunDirectory(fs::path target) : target_(std::move(target)) {
+std::vector<std::string> files_not_written_by_ffp(const fs::path& folder) {
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return {};
+  if (!fs::is_directory(folder, ec)) return {folder.filename().string()};
+  std::set<std::string> listed;
+  std::vector<std::string> foreign;
+  if (!read_manifest(folder, listed) && written_before_manifests(folder)) {
+    // No list of its files: only the top-level names ffp writes pass.
+    static const std::set<std::string> ffp_names = {"summary.json", "history.csv", "plots",  "fields",
+                                                    "report.md",    "figures",     "tables", "failed-step.json"};
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+      if (!ffp_names.contains(entry.path().filename().string())) foreign.push_back(entry.path().filename().string());
+    std::sort(foreign.begin(), foreign.end());
+    return foreign;
+  }
+  for (const auto& entry : entries_under(folder))
+    if (!listed.contains(entry)) foreign.push_back(entry);
+  return foreign;
+}
+
+void require_replaceable(const fs::path& folder, const std::string& option, bool force) {
+  if (force) return;
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    throw OutputFolderRefused(option + ": '" + folder.string() + "' is a file, not a folder: choose another name");
+  const auto foreign = files_not_written_by_ffp(folder);
+  if (foreign.empty()) return;
+  throw OutputFolderRefused(option + ": '" + folder.string() + "' holds " + describe_foreign(foreign) +
+                            ", which ffp did not write: choose another folder, or pass --force to replace it");
+}
+
+void write_manifest(const fs::path& folder, const std::string& what) {
+  nlohmann::json manifest = {{"written_by", "ffp"}, {"what", what}, {"files", entries_under(folder)}};
+  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n");
+}
+
+void claim_persistent_folder(const fs::path& folder, const std::string& option, const std::string& what, bool force) {
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    throw OutputFolderRefused(option + ": '" + folder.string() + "' is a file, not a folder: choose another name");
+  if (fs::exists(folder / kOutputManifest, ec)) return;
+  bool ours = true;
+  std::vector<std::string> foreign;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    if (!looks_like_cache_entry(entry)) {
+      ours = false;
+      foreign.push_back(entry.path().filename().string());
+    }
+  }
+  if (!ours && !force)
+    throw OutputFolderRefused(option + ": '" + folder.string() + "' holds " + describe_foreign(foreign) +
+                              ", which ffp did not write: choose another folder, or pass --force to use it");
+  fs::create_directories(folder);
+  // A persistent folder's manifest only marks it as ffp's; its runs carry their own.
+  nlohmann::json manifest = {{"written_by", "ffp"}, {"what", what}, {"files", nlohmann::json::array()}};
+  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n");
+}
+
+void remove_stale_siblings(const fs::path& target) {
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* tag : {"tmp", "old"}) {
+      const std::string prefix = hidden_prefix(target, tag);
+      if (!name.starts_with(prefix) || name.size() == prefix.size()) continue;
+      const std::string digits = name.substr(prefix.size());
+      if (!std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+        continue;
+      if (digits.size() > 9 || process_alive(std::stol(digits))) continue;
+      std::error_code ignored;
+      fs::remove_all(entry.path(), ignored);
+    }
+  }
+}
+
+RunDirectory::RunDirectory(fs::path target, std::string option, bool force)
+    : target_(std::move(target)), option_(std::move(option)), force_(force) {
   if (target_.filename().empty()) target_ = target_.parent_path();
+  require_replaceable(target_, option_, force_);
   if (target_.has_parent_path()) fs::create_directories(target_.parent_path());
+  remove_stale_siblings(target_);
   working_ = sibling(target_, "tmp");
   fs::remove_all(working_);
   fs::create_directories(working_);
@@ -43,7 +190,9 @@ RunDirectory::~RunDirectory() {
   unregister_cleanup_path(working_);
 }
 
-void RunDirectory::commit() {
+void RunDirectory::commit(const std::string& what) {
+  write_manifest(working_, what);
+  require_replaceable(target_, option_, force_);  // the user may have put a file there meanwhile
   const fs::path old = sibling(target_, "old");
   std::error_code ec;
   fs::remove_all(old, ec);

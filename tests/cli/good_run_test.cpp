@@ -51,12 +51,14 @@ TEST_CASE("a set override changes a key and the summary echoes it", "[cli]") {
 
 TEST_CASE("a complete run replaces an older result", "[cli]") {
   Scratch scratch;
-  fs::create_directories(scratch.path() / "result");
-  scratch.write("result/marker.txt", "old");
   const auto file = scratch.write_json("scene.json", good_point_scene());
   REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path()).exit_code == 0);
-  CHECK_FALSE(fs::exists(scratch.path() / "result" / "marker.txt"));
-  CHECK(fs::exists(scratch.path() / "result" / "summary.json"));
+  const auto first = fs::last_write_time(scratch.path() / "result" / "summary.json");
+  REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"},
+                  scratch.path()).exit_code == 0);
+  std::ifstream in(scratch.path() / "result" / "summary.json");
+  CHECK(json::parse(in)["scene"]["material"]["E_kPa"] == 5000.0);
+  CHECK(fs::last_write_time(scratch.path() / "result" / "summary.json") >= first);
 }
 
 TEST_CASE("SIGTERM during a run leaves no result directory", "[cli]") {
