@@ -6,6 +6,7 @@
 #include <string>
 
 #include "mpm/diagnostics.hpp"
+#include "mpm/model_size.hpp"
 
 namespace ffp::mpm {
 
@@ -137,6 +138,12 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
 }
 
 }  // namespace
+
+ModelSize estimate_ffp_size(const FfpDescription& d, double budget_bytes) {
+  const FfpGridLayout layout = ffp_grid_layout(d);
+  const PenetrometerGeometry geometry(d.shape);
+  return estimate_model_size(build_model(d, layout, geometry), budget_bytes);
+}
 
 FfpRun::FfpRun(const FfpDescription& d)
     : description_(d),

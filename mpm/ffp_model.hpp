@@ -17,6 +17,7 @@
 #include "mpm/deformable_penetrometer.hpp"
 #include "mpm/material_group.hpp"
 #include "mpm/model.hpp"
+#include "mpm/model_size.hpp"
 #include "mpm/moving_mesh.hpp"
 #include "mpm/penetrometer_geometry.hpp"
 #include "mpm/rigid_penetrometer.hpp"
@@ -95,6 +96,9 @@ struct FfpGridLayout {
 
 /// Throws std::invalid_argument for sizes that do not fit together.
 FfpGridLayout ffp_grid_layout(const FfpDescription& description);
+
+/// Nodes and particles of FfpRun(description) before it is built (see estimate_model_size).
+ModelSize estimate_ffp_size(const FfpDescription& description, double budget_bytes);
 
 class FfpRun {
  public:

@@ -1,5 +1,6 @@
 #pragma once
 /// Filling a body's region with particles on a regular sub-lattice of the grid cells.
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -18,5 +19,11 @@ namespace ffp::mpm {
 /// zones are seeded at the zone's spacing instead.
 void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
                            double gravity_m_s2, Particles& particles, std::span<const SeedingZone> zones = {});
+
+/// How many particles append_body_particles would make on a grid with these
+/// axes, without making them; counting stops at `limit` (then the result is
+/// `limit`: at least that many).
+std::size_t count_body_particles(const GridAxis& r_axis, const GridAxis& z_axis, const BodyDescription& body,
+                                 std::uint8_t body_index, std::span<const SeedingZone> zones, std::size_t limit);
 
 }  // namespace ffp::mpm

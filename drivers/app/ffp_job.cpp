@@ -39,6 +39,7 @@
 
 #include "drivers/app/ffp_scene.hpp"
 #include "drivers/app/kinds.hpp"
+#include "drivers/app/memory_check.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/progress.hpp"
 #include "drivers/output/vtu_writer.hpp"
@@ -55,9 +56,9 @@ namespace fs = std::filesystem;
 
 class PenetrometerJob : public Job {
  public:
-  PenetrometerJob(FfpScene scene, std::string name)
-      : scene_(std::move(scene)), name_(std::move(name)), run_(std::make_unique<mpm::FfpRun>(scene_.model)),
-        initial_dt_s_(run_->simulation().dt_s) {}
+  PenetrometerJob(FfpScene scene, std::string name, mpm::ModelSize size)
+      : scene_(std::move(scene)), name_(std::move(name)), size_(size),
+        run_(std::make_unique<mpm::FfpRun>(scene_.model)), initial_dt_s_(run_->simulation().dt_s) {}
 
   void describe(std::ostream& out) const override {
     const mpm::Simulation& s = run_->simulation();
@@ -66,6 +67,7 @@ class PenetrometerJob : public Job {
         << " m; moving band rows " << g.band_first << "–" << g.band_last << " (z = " << g.z_nodes_m[g.band_first]
         << " … " << g.z_nodes_m[g.band_last] << " m)\n";
     out << "particles: " << s.particles.size() << " (soil " << run_->soil_particles() << ")\n";
+    describe_memory(out, size_);
     if (cpt()) {
       out << "penetrometer: rigid (exact outline, no particles), pushed at " << -scene_.model.velocity_m_s
           << " m/s to " << -scene_.model.velocity_m_s * scene_.end_time_s << " m\n";
@@ -88,6 +90,7 @@ class PenetrometerJob : public Job {
 
   FfpScene scene_;
   std::string name_;
+  mpm::ModelSize size_;
   std::unique_ptr<mpm::FfpRun> run_;
   double initial_dt_s_;
 };
@@ -345,7 +348,11 @@ void PenetrometerJob::run(RunContext& context) {
 
 std::unique_ptr<Job> make_penetrometer_job(FfpScene scene, std::string name) {
   try {
-    return std::make_unique<PenetrometerJob>(std::move(scene), std::move(name));
+    const mpm::ModelSize size = mpm::estimate_ffp_size(scene.model, memory_budget_bytes());
+    require_fits_in_memory(size, "mesh.min_cell_m",
+                           "use a coarser mesh.min_cell_m (the particle count grows as 1/h²), fewer "
+                           "soil.particles_per_cell_near or a smaller soil.near_radius_m");
+    return std::make_unique<PenetrometerJob>(std::move(scene), std::move(name), size);
   } catch (const std::invalid_argument& e) {
     throw SceneError(std::string("ffp scene: ") + e.what());
   } catch (const mpm::StepFailure& e) {

@@ -31,6 +31,7 @@
 #include "drivers/output/progress.hpp"
 #include "drivers/output/vtu_writer.hpp"
 #include "mpm/diagnostics.hpp"
+#include "drivers/app/memory_check.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
 #include "reports/plot.hpp"
@@ -55,11 +56,13 @@ class MpmJob : public Job {
   }
 
   const mpm::Simulation& simulation() const { return simulation_; }
+  mpm::ModelSize size;  ///< the estimate the scene was checked with (printed by ffp check)
 
   void describe(std::ostream& out) const override {
     const mpm::Simulation& s = simulation_;
     out << "grid: " << s.grid.r.nodes() << " × " << s.grid.z.nodes() << " nodes, h_min = " << s.grid.min_spacing()
         << " m; particles: " << s.particles.size() << "\n";
+    describe_memory(out, size);
     out << "stages: " << s.stages.describe() << "\n";
     out << "CFL time step limit h_min/(c_p + |v|max): " << format_seconds(s.dt_limit_s) << "\n";
     out << "time step: " << format_seconds(s.dt_s)
@@ -263,7 +266,11 @@ std::unique_ptr<Job> make_mpm_job(SceneReader& scene, const fs::path&) {
   MpmScene parsed = read_mpm_scene(scene);
   std::unique_ptr<MpmJob> job;
   try {
+    const mpm::ModelSize size = mpm::estimate_model_size(parsed.model, memory_budget_bytes());
+    require_fits_in_memory(size, "mesh",
+                           "use larger mesh.cell_r_m / cell_z_m or fewer particles_per_cell in the bodies");
     job = std::make_unique<MpmJob>(std::move(parsed), name);
+    job->size = size;
   } catch (const std::invalid_argument& e) {
     throw SceneError(std::string("mpm scene: ") + e.what());
   } catch (const mpm::StepFailure& e) {

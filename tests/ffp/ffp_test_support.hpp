@@ -42,6 +42,7 @@ class ScratchDir {
 struct ProgramResult {
   int exit_code = -1;
   std::string err;
+  std::string out;
 };
 
 inline std::string quoted(const std::string& word) {
@@ -50,22 +51,27 @@ inline std::string quoted(const std::string& word) {
   return out + "'";
 }
 
-/// `ffp ARGS…` with stdout discarded and stderr captured. One OpenMP thread:
+/// `ffp ARGS…` with stdout and stderr captured. One OpenMP thread:
 /// ctest runs tests side by side, and two programs with two spinning threads
 /// each on two cores wait a scheduler quantum at every barrier (measured: 60×
 /// slower); the results do not depend on the thread count (mpm/parallel.hpp).
 inline ProgramResult run_program(const std::vector<std::string>& args, const std::filesystem::path& scratch) {
-  const std::filesystem::path err = scratch / "stderr.txt";
+  const std::filesystem::path err = scratch / "stderr.txt", out = scratch / "stdout.txt";
   std::string command = "OMP_NUM_THREADS=1 " + quoted(FFP_BINARY);
   for (const std::string& a : args) command += " " + quoted(a);
-  command += " > /dev/null 2> " + quoted(err.string());
+  command += " > " + quoted(out.string()) + " 2> " + quoted(err.string());
   const int status = std::system(command.c_str());
   ProgramResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  std::ostringstream s;
-  s << in.rdbuf();
-  r.err = s.str();
+  const auto slurp = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  r.err = slurp(err);
+  r.out = slurp(out);
+  std::filesystem::remove(out);
   return r;
 }
 
