@@ -187,6 +187,9 @@ FfpRun::FfpRun(const FfpDescription& d)
     settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
     rigid_ = std::make_unique<RigidPenetrometer>(settings);
     rigid_->attach(s);
+    s.rigid_speed_m_s = std::abs(d.velocity_m_s);
+    s.dt_limit_s = cfl_time_step_limit(s);
+    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   }
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last, {"move_mesh", [this](Simulation& sim) { mesh_.apply(sim.grid, state().displacement_m); }});

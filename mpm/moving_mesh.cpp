@@ -24,7 +24,10 @@ std::vector<double> MovingMesh::coordinates(double u) const {
   const double above = (top - (z0_[hi] + u)) / (top - z0_[hi]);
   if (!(below > 0.05) || !(above > 0.05))
     throw StepFailure("moving mesh: the penetrometer's band came within 5 % of the grid's " +
-                      std::string(below <= 0.05 ? "bottom" : "top") + " (displacement " + std::to_string(u) + " m)");
+                      std::string(below <= 0.05 ? "bottom" : "top") + " (displacement " + std::to_string(u) + " m): " +
+                      (below <= 0.05 ? "the penetrometer went through the chamber; give a deeper soil.depth_m or a "
+                                       "shorter end_time_s"
+                                     : "it rebounded out of the grid; give a larger mesh.air_above_m"));
   std::vector<double> z(n);
   for (std::size_t j = 0; j < n; ++j) {
     if (j <= lo) {

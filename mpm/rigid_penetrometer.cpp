@@ -156,9 +156,10 @@ void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
   }
 }
 
-void RigidPenetrometer::move(const Simulation& s) {
+void RigidPenetrometer::move(Simulation& s) {
   tip_z_ += s.dt_s * state_.velocity_m_s;
   state_.displacement_m = tip_z_ - tip_z0_;
+  s.rigid_speed_m_s = std::abs(state_.velocity_m_s);
 }
 
 }  // namespace ffp::mpm

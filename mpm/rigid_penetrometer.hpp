@@ -72,7 +72,7 @@ class RigidPenetrometer {
   /// MUSL: the same law on the soil's remapped velocities (strain rates see the contact).
   void apply_contact_remapped(Simulation& simulation);
   /// x_tip ← x_tip + Δt·v (the particles' update rule).
-  void move(const Simulation& simulation);
+  void move(Simulation& simulation);
 
   /// A prescribed body's velocity from the next step on (e.g. to hold it still).
   void set_prescribed_velocity(double velocity_m_s) { settings_.velocity_m_s = velocity_m_s; }

@@ -103,7 +103,8 @@ double cfl_time_step_limit(const Simulation& s) {
     if (bad > 0) break;
     // A disconnected particle is stress-free; it reconnects at the disconnection density.
     if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
-    fastest = std::max(fastest, std::sqrt((g.constrained_modulus() + stress) * stiffest) + std::sqrt(speed2));
+    fastest = std::max(fastest, std::sqrt((g.constrained_modulus() + stress) * stiffest) +
+                                    std::max(std::sqrt(speed2), s.rigid_speed_m_s));
   }
   if (bad > 0) {
     for (std::size_t i = 0; i < p.size(); ++i) {

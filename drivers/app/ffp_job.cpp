@@ -40,6 +40,7 @@
 #include "drivers/app/ffp_scene.hpp"
 #include "drivers/app/kinds.hpp"
 #include "drivers/app/memory_check.hpp"
+#include "drivers/app/thread_governor.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/progress.hpp"
 #include "drivers/output/vtu_writer.hpp"
@@ -219,6 +220,7 @@ void PenetrometerJob::run(RunContext& context) {
   std::size_t most_contact_nodes = 0, most_disconnected = 0;
   const double end = scene_.end_time_s;
   Progress progress(std::string(cpt() ? "cpt " : "ffp ") + name_, end, context.show_progress);
+  ThreadGovernor threads;
   try {
     while (s.time_s < end * (1.0 - 1e-12)) {
       if (s.time_s + s.dt_s > end) s.dt_s = end - s.time_s;  // land on end_time_s
@@ -235,6 +237,7 @@ void PenetrometerJob::run(RunContext& context) {
       }
       fields_due();
       progress.update(s.time_s, s.step);
+      threads.poll();
     }
   } catch (const mpm::StepFailure& e) {
     throw RunFailure(std::string(cpt() ? "cpt" : "ffp") + " step " + std::to_string(s.step) + ": " + e.what());

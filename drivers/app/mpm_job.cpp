@@ -32,6 +32,7 @@
 #include "drivers/output/vtu_writer.hpp"
 #include "mpm/diagnostics.hpp"
 #include "drivers/app/memory_check.hpp"
+#include "drivers/app/thread_governor.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
 #include "reports/plot.hpp"
@@ -217,6 +218,7 @@ void MpmJob::run(RunContext& context) {
   double next_history = output.history_interval_s;
   Progress progress("mpm " + name_, scene_.end_time_s, context.show_progress);
   const double end = scene_.end_time_s;
+  ThreadGovernor threads;
   try {
     while (s.time_s < end * (1.0 - 1e-12)) {
       if (s.time_s + s.dt_s > end) s.dt_s = end - s.time_s;  // land on end_time_s
@@ -227,6 +229,7 @@ void MpmJob::run(RunContext& context) {
       }
       fields_due();
       progress.update(s.time_s, s.step);
+      threads.poll();
     }
   } catch (const mpm::StepFailure& e) {
     throw RunFailure(std::string("mpm step ") + std::to_string(s.step) + ": " + e.what());
