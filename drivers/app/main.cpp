@@ -14,15 +14,16 @@ namespace {
 constexpr const char* kUsage = R"(usage: ffp <command> [options]
 
 Commands:
-  run SCENE.json [--out DIR] [--set key=value ...] [--quiet]
+  run SCENE.json [--out DIR] [--force] [--set key=value ...] [--quiet]
         Run a scene; write DIR/summary.json, DIR/history.csv, DIR/plots/
         (default DIR: results/<scene name>). --set overrides any scene key,
-        e.g. --set material.E_kPa=5000.
+        e.g. --set material.E_kPa=5000. A DIR holding files ffp did not
+        write is refused unless --force.
   check SCENE.json [--set key=value ...]
         Validate a scene and print it with defaults filled in.
-  sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR]
+  sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR] [--force]
         Run every combination as an independent process; DIR/sweep.csv.
-  report [--out DIR] [--jobs N]
+  report [--out DIR] [--cache DIR] [--jobs N] [--only TEXT] [--force]
         Run the validation study (cached) and write DIR/report.md with figures;
         N runs side by side (default: one per core).
   bench
