@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build
   libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
   catch2 libbenchmark-dev gnuplot-nox
+  clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
 )
 
 missing=()

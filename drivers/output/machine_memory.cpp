@@ -1,6 +1,7 @@
 #include "drivers/output/machine_memory.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -53,6 +54,12 @@ MemoryLimit usable_memory() {
   tighten(limit, cgroup_limit_bytes(), "cgroup memory.max");
   tighten(limit, rlimit_bytes(RLIMIT_AS), "ulimit -v");
   tighten(limit, rlimit_bytes(RLIMIT_DATA), "ulimit -d");
+  // A budget of one's own: a cluster job's memory request, or the fuzzers' limit.
+  if (const char* mb = std::getenv("FFP_MEMORY_LIMIT_MB")) {
+    char* end = nullptr;
+    const double value = std::strtod(mb, &end);
+    if (end != mb && *end == '\0' && value > 0.0) tighten(limit, value * 1e6, "FFP_MEMORY_LIMIT_MB");
+  }
   return limit;
 }
 

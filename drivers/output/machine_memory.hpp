@@ -1,7 +1,8 @@
 #pragma once
 /// How much memory this process may use: the least of the machine's available
 /// memory (MemAvailable), the cgroup limit (memory.max) and the address-space
-/// and data rlimits. Scenes are checked against it before they allocate.
+/// and data rlimits, and FFP_MEMORY_LIMIT_MB when set. Scenes are checked
+/// against it before they allocate.
 #include <cstdint>
 #include <string>
 

@@ -371,6 +371,8 @@ void apply_override(json& scene, const std::string& assignment) {
     value = json::parse(value_text);
   } catch (const json::parse_error&) {
     value = value_text;  // bare words are strings: --set material.model=ssmc
+  } catch (const json::out_of_range&) {  // found by fuzzing: 1e400 overflows a double
+    throw SceneError("--set " + key_path + ": '" + value_text + "' is beyond the range of a number (±1.8e308)");
   }
   json* node = &scene;
   std::string walked;

@@ -93,6 +93,9 @@ std::vector<BadInput> bad_inputs() {
        [](const Scratch& s) { return write_scene(s, [](json&) {}); }, {"--set", "material.nu=abc"}, "material.nu"},
       {"--set NaN",
        [](const Scratch& s) { return write_scene(s, [](json&) {}); }, {"--set", "material.nu=NaN"}, "material.nu"},
+      {"--set value beyond a double (found by fuzzing)",
+       [](const Scratch& s) { return write_scene(s, [](json&) {}); }, {"--set", "material.E_kPa=1e400"},
+       "material.E_kPa"},
       {"name that would escape the output folder",
        [](const Scratch& s) { return write_scene(s, [](json& j) { j["name"] = "../escape"; }); }, {}, "name"},
   };
