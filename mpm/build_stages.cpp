@@ -15,11 +15,12 @@ StageList build_stages(const Simulation& s) {
   list.append({"integrate_grid", integrate_grid});
   list.append({"apply_boundary_conditions", apply_boundary_conditions});
   list.append({"update_particles", update_particles});
-  if (s.settings.transfer == Transfer::musl) {
+  if (s.settings.transfer != Transfer::usl) {
     list.append({"map_velocities_to_grid", map_velocities_to_grid});
     list.append({"apply_boundary_conditions", apply_boundary_conditions});
     list.append({"compute_strain_increments",
                  [](Simulation& sim) { compute_strain_increments(sim, StrainVelocity::remapped); }});
+    if (s.settings.transfer == Transfer::musl_remapped) list.append({"move_particles", move_particles});
   } else {
     list.append({"compute_strain_increments",
                  [](Simulation& sim) { compute_strain_increments(sim, StrainVelocity::updated_grid); }});

@@ -17,7 +17,7 @@ DeformablePenetrometer::DeformablePenetrometer(const Simulation& s, const Deform
 
 void DeformablePenetrometer::attach(Simulation& s) {
   s.stages.insert_before("update_particles", {"apply_two_body_contact", [this](Simulation& sim) { apply_contact(sim); }});
-  if (s.stages.contains("map_velocities_to_grid"))
+  if (s.settings.transfer == Transfer::musl)  // the classic MUSL strains from a remapped field: correct it too
     s.stages.insert_before("compute_strain_increments",
                            {"apply_two_body_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
@@ -36,7 +36,7 @@ double DeformablePenetrometer::correct(Simulation& s, std::vector<double> NodalF
     const double ms = soil.mass[k], mf = body.mass[k];
     const Vector2 vs{svr[k], svz[k]}, vf{bvr[k], bvz[k]};
     const Vector2 cm{(ms * vs.r + mf * vf.r) / (ms + mf), (ms * vs.z + mf * vf.z) / (ms + mf)};
-    const Vector2 after = contact_velocity(vs, cm, c.normal, settings_.contact);
+    const Vector2 after = contact_velocity(vs, cm, c.normal, settings_.contact, s.dt_s / s.grid.min_spacing());
     const double dr = after.r - vs.r, dz = after.z - vs.z;
     if (dr == 0.0 && dz == 0.0) continue;
     ++count;

@@ -40,7 +40,7 @@ class DeformablePenetrometer {
   DeformablePenetrometer& operator=(const DeformablePenetrometer&) = delete;
 
   /// Insert apply_two_body_contact (after the grid update and fixities),
-  /// apply_two_body_contact_remapped (MUSL) and follow_deformable_penetrometer
+  /// apply_two_body_contact_remapped (classic MUSL) and follow_deformable_penetrometer
   /// (centre of mass, before the time-step update). Keeps a pointer to this.
   void attach(Simulation& simulation);
 

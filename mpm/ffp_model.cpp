@@ -225,8 +225,20 @@ std::size_t FfpRun::disconnected_soil_particles() const {
   const Particles& P = simulation_.particles;
   const MaterialGroup& soil = simulation_.groups[0];
   std::size_t count = 0;
-  for (std::size_t p = soil.begin; p < soil.end; ++p) count += P.mass[p] < soil.disconnected_below_kg_m3 * P.volume[p];
+  for (std::size_t p = soil.begin; p < soil.end; ++p) count += P.mass[p] <= soil.disconnected_below_kg_m3 * P.volume[p];
   return count;
+}
+
+FfpRun::VolumeRatios FfpRun::soil_volume_ratios() const {
+  const Particles& P = simulation_.particles;
+  const MaterialGroup& soil = simulation_.groups[0];
+  VolumeRatios ratios;
+  for (std::size_t p = soil.begin; p < soil.end; ++p) {
+    const double J = P.volume[p] * soil.density_kg_m3 / P.mass[p];  // V/V0, V0 = m/ρ0
+    ratios.max = std::max(ratios.max, J);
+    ratios.inflated += J > 2.0 * (1.0 - 1e-9);  // at or past twice V0 (a disconnected particle is held at its limit)
+  }
+  return ratios;
 }
 
 }  // namespace ffp::mpm

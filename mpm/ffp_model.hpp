@@ -134,6 +134,12 @@ class FfpRun {
   double soil_intrusion_m() const;
   /// Soil particles that have lost grain contact (below the disconnection density).
   std::size_t disconnected_soil_particles() const;
+  /// The largest J = V/V0 of a soil particle, and how many have J > 2.
+  struct VolumeRatios {
+    double max = 0.0;
+    std::size_t inflated = 0;
+  };
+  VolumeRatios soil_volume_ratios() const;
 
  private:
   FfpDescription description_;

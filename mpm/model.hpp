@@ -17,8 +17,11 @@
 namespace ffp::mpm {
 
 enum class Transfer : std::uint8_t {
-  usl,   ///< update stress last: strain rate from v_i^{n+1} of the grid update
-  musl,  ///< modified USL (Sulsky et al. 1995): strain rate from momenta remapped from the updated particles
+  usl,   ///< update stress last: positions and strain rate from v_i^{n+1} of the grid update
+  musl,  ///< modified USL (Sulsky et al. 1995): positions from v_i^{n+1}, strain rate from the velocities
+         ///< remapped from the updated particles (with contact, the remapped field is corrected again)
+  musl_remapped,  ///< the paper's code (Anura3D): positions and strain rate both from the remapped
+                  ///< velocities, no second contact correction: a particle moves as it strains
 };
 
 struct SolverSettings {

@@ -18,7 +18,7 @@ RigidPenetrometer::RigidPenetrometer(const RigidPenetrometerSettings& settings)
 void RigidPenetrometer::attach(Simulation& s) {
   // After the fixities, so that the contact law sees v_r = 0 on the axis (and keeps it).
   s.stages.insert_before("update_particles", {"apply_rigid_contact", [this](Simulation& sim) { apply_contact(sim); }});
-  if (s.stages.contains("map_velocities_to_grid"))
+  if (s.settings.transfer == Transfer::musl)  // the classic MUSL strains from a remapped field: correct it too
     s.stages.insert_before("compute_strain_increments",
                            {"apply_rigid_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
@@ -51,12 +51,13 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
 
 double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) const {
   NodalField& f = s.grid.fields[settings_.soil_field];
+  const double dt_over_h = s.dt_s / s.grid.min_spacing();
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t c = 0; c < nodes_.size(); ++c) {
     const std::size_t k = nodes_[c].node;
     const Vector2 before = soil_star_[c];
-    const Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact);
+    const Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact, dt_over_h);
     sum += f.mass[k] * (after.z - before.z);
     if (after.r != before.r || after.z != before.z) ++count;
     if (write) {
@@ -149,8 +150,10 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
 void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
   NodalField& f = s.grid.fields[settings_.soil_field];
   const Vector2 body{0.0, state_.velocity_m_s};
+  const double dt_over_h = s.dt_s / s.grid.min_spacing();
   for (const ContactNode& c : nodes_) {
-    const Vector2 after = contact_velocity({f.velocity_r[c.node], f.velocity_z[c.node]}, body, c.normal, settings_.contact);
+    const Vector2 after =
+        contact_velocity({f.velocity_r[c.node], f.velocity_z[c.node]}, body, c.normal, settings_.contact, dt_over_h);
     f.velocity_r[c.node] = after.r;
     f.velocity_z[c.node] = after.z;
   }

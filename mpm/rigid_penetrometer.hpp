@@ -63,13 +63,15 @@ class RigidPenetrometer {
 
   /// Insert the stages into the simulation's step: apply_rigid_contact after
   /// the grid update and its fixities, apply_rigid_contact_remapped after the
-  /// MUSL remap and its fixities, move_rigid_penetrometer before the time-step update. The stages
+  /// remap of the classic MUSL (musl_remapped moves and strains particles with
+  /// the remapped field uncorrected), move_rigid_penetrometer before the time-step update. The stages
   /// keep a pointer to this object: it must outlive the simulation's use.
   void attach(Simulation& simulation);
 
   /// Lagrangian phase: contact nodes, the rigid velocity, the soil's corrected velocity.
   void apply_contact(Simulation& simulation);
-  /// MUSL: the same law on the soil's remapped velocities (strain rates see the contact).
+  /// Classic MUSL only: the same law on the soil's remapped velocities, so that its strain
+  /// rates see the contact (a second correction: two kinematics in one step, review F3).
   void apply_contact_remapped(Simulation& simulation);
   /// x_tip ← x_tip + Δt·v (the particles' update rule).
   void move(Simulation& simulation);

@@ -9,7 +9,21 @@ namespace ffp::mpm {
 
 namespace {
 
-template <int S>
+/// Moves a particle to x + Δt·v, kept inside the walls (counted in `clamps`).
+inline void move_within_walls(Particles& P, std::size_t p, double r, double z, const Walls& walls, long& clamps) {
+  // Interpolation makes v_n → 0 at a wall, so particles approach it but never
+  // cross — unless Δt·|v_i| exceeds a cell at some node, which the CFL estimate
+  // does not bound. Keep them in, and count it.
+  if (r < walls.r_min || r > walls.r_max || z < walls.z_min || z > walls.z_max) {
+    r = std::clamp(r, walls.r_min, walls.r_max);
+    z = std::clamp(z, walls.z_min, walls.z_max);
+    ++clamps;
+  }
+  P.r[p] = r;
+  P.z[p] = z;
+}
+
+template <int S, bool Move>
 void update_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s, alpha = s.settings.flip_fraction;
@@ -34,17 +48,33 @@ void update_particles_impl(Simulation& s) {
     }
     P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
     P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
-    double r = P.r[p] + dt * vr, z = P.z[p] + dt * vz;
-    // Interpolation makes v_n → 0 at a wall, so particles approach it but never
-    // cross — unless Δt·|v_i| exceeds a cell at some node, which the CFL estimate
-    // does not bound. Keep them in, and count it.
-    if (r < walls.r_min || r > walls.r_max || z < walls.z_min || z > walls.z_max) {
-      r = std::clamp(r, walls.r_min, walls.r_max);
-      z = std::clamp(z, walls.z_min, walls.z_max);
-      ++clamps;
+    if constexpr (Move) move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamps);
+  }
+  s.wall_clamps += clamps;
+}
+
+template <int S>
+void move_particles_impl(Simulation& s) {
+  Particles& P = s.particles;
+  const double dt = s.dt_s;
+  const Walls& walls = s.walls;
+  const std::size_t n = P.size();
+  long clamps = 0;
+  FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
+  for (std::size_t p = 0; p < n; ++p) {
+    const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+    const ShapeWeights& w = s.weights[p];
+    double vr = 0.0, vz = 0.0;
+    for (int b = 0; b < S; ++b) {
+      const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
+      for (int a = 0; a < S; ++a) {
+        const std::size_t i = row + static_cast<std::size_t>(a);
+        const double N = w.wr[a] * w.wz[b];
+        vr += N * f.velocity_r[i];
+        vz += N * f.velocity_z[i];
+      }
     }
-    P.r[p] = r;
-    P.z[p] = z;
+    move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamps);
   }
   s.wall_clamps += clamps;
 }
@@ -87,12 +117,25 @@ void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray vel
 }  // namespace
 
 // v_p^{n+1} = α (v_p^n + Σ_i S_ip (v_i^{n+1} − v_i^n)) + (1 − α) Σ_i S_ip v_i^{n+1}
-// x_p^{n+1} = x_p^n + Δt Σ_i S_ip v_i^{n+1}
+// x_p^{n+1} = x_p^n + Δt Σ_i S_ip v_i^{n+1} (USL, classic MUSL); musl_remapped: in move_particles.
 void update_particles(Simulation& s) {
-  if (s.settings.shape_function == ShapeFunction::linear) {
-    update_particles_impl<2>(s);
+  const bool linear = s.settings.shape_function == ShapeFunction::linear;
+  if (s.settings.transfer != Transfer::musl_remapped) {
+    linear ? update_particles_impl<2, true>(s) : update_particles_impl<3, true>(s);
   } else {
-    update_particles_impl<3>(s);
+    linear ? update_particles_impl<2, false>(s) : update_particles_impl<3, false>(s);
+  }
+}
+
+// musl_remapped (as the paper's code, Anura3D, moves particles): x_p^{n+1} =
+// x_p^n + Δt Σ_i S_ip ṽ_i^{n+1}, ṽ the velocities remapped from the updated
+// particles — the same field that gives the strain increments, so that a
+// particle moves as it strains.
+void move_particles(Simulation& s) {
+  if (s.settings.shape_function == ShapeFunction::linear) {
+    move_particles_impl<2>(s);
+  } else {
+    move_particles_impl<3>(s);
   }
 }
 

@@ -36,11 +36,12 @@ void scatter_internal_forces(Simulation& s) {
   const Particles& P = s.particles;
   const bool smoothed = s.settings.strain_smoothing;
   const std::size_t bodies = s.bodies.size();
+  const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
   s.bins.scatter([&](std::size_t p) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
     Voigt sig = P.stress[p];
-    if (smoothed) {  // B-bar: the cell's mean stress stands in for the particle's
+    if (smoothed && takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
       const double shift = s.cell_mean_stress[w.cell * bodies + P.body[p]] - trace(sig) / 3.0;
       sig[0] += shift;
       sig[1] += shift;

@@ -8,13 +8,20 @@ namespace ffp::mpm {
 // Strain smoothing (Al-Kafaji 2013; Yerro 2015): per cell c and body,
 //   Δε̄_v,c = Σ_{p∈c} V_p Δε_v,p / Σ_{p∈c} V_p   (V_p = r_p A_p: axisymmetric volume weights)
 //   Δε_p ← Δε_p + (Δε̄_v,c − Δε_v,p)/3 · I
+// over the particles that take part in the means (takes_part_in_cell_means: not a
+// disconnected granular particle). Volume weights, the integration weights of the
+// internal force, keep the operator the transpose of smooth_mean_stress (mass weights
+// made an E = 1 kPa block collapsing at Courant 1 go unstable); the inflated particles
+// are kept out by the exclusion and by holding their volume (update_stresses).
 void smooth_volumetric_strain(Simulation& s) {
   const Particles& P = s.particles;
   const std::size_t bodies = s.bodies.size();
   const std::size_t slots = s.grid.cells() * bodies;
+  const std::vector<double> limit = cell_mean_density_limits(s);
   s.cell_volume.assign(slots, 0.0);
   s.cell_volumetric_strain.assign(slots, 0.0);
   s.bins.for_each_in_cells([&](std::size_t p) {
+    if (!takes_part_in_cell_means(P, p, limit)) return;
     const std::size_t k = s.weights[p].cell * bodies + P.body[p];
     s.cell_volume[k] += P.volume[p];
     s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
@@ -22,6 +29,7 @@ void smooth_volumetric_strain(Simulation& s) {
   const std::size_t n = P.size();
   FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
+    if (!takes_part_in_cell_means(P, p, limit)) continue;
     const std::size_t k = s.weights[p].cell * bodies + P.body[p];
     Voigt& de = s.strain_increment[p];
     const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
@@ -32,17 +40,19 @@ void smooth_volumetric_strain(Simulation& s) {
 }
 
 // The transpose of strain smoothing, for the internal force (B-bar, Hughes 1980):
-//   σ̄_m,c = Σ_{p∈c} V_p tr(σ_p)/3 / Σ_{p∈c} V_p,  used in place of each particle's tr(σ_p)/3.
-// Smoothing only the strain makes the discrete stiffness unsymmetric; measured here, a
-// ν = 0.49 block then gains energy even at Courant 0.5, and with both halves it is
-// stable at Courant 1 (linear and GIMP).
+//   σ̄_m,c = Σ_{p∈c} V_p tr(σ_p)/3 / Σ_{p∈c} V_p,  used in place of each particle's tr(σ_p)/3
+// (same particles and weights as the strain). Smoothing only the strain makes the
+// discrete stiffness unsymmetric; measured here, a ν = 0.49 block then gains energy
+// even at Courant 0.5, and with both halves it is stable at Courant 1 (linear and GIMP).
 void smooth_mean_stress(Simulation& s) {
   const Particles& P = s.particles;
   const std::size_t bodies = s.bodies.size();
   const std::size_t slots = s.grid.cells() * bodies;
+  const std::vector<double> limit = cell_mean_density_limits(s);
   s.cell_volume.assign(slots, 0.0);
   s.cell_mean_stress.assign(slots, 0.0);
   s.bins.for_each_in_cells([&](std::size_t p) {
+    if (!takes_part_in_cell_means(P, p, limit)) return;
     const std::size_t k = s.weights[p].cell * bodies + P.body[p];
     s.cell_volume[k] += P.volume[p];
     s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
@@ -50,6 +60,15 @@ void smooth_mean_stress(Simulation& s) {
   FFP_OMP(omp parallel for schedule(static) if (slots >= kParallelMinimum))
   for (std::size_t k = 0; k < slots; ++k)
     if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
+}
+
+std::vector<double> cell_mean_density_limits(const Simulation& s) {
+  std::vector<double> limit(s.bodies.size());
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const MaterialGroup& g = s.groups[s.bodies[b].group];
+    limit[b] = g.disconnected_below_kg_m3;  // 0 for a body that is not granular: every particle takes part
+  }
+  return limit;
 }
 
 // Jaumann rate (objective for large rotations), before the law:
@@ -78,10 +97,19 @@ void update_stresses(Simulation& s) {
       }
       g.update(first, last, stress, s.strain_increment, s.dt_s);
       if (g.disconnected_below_kg_m3 > 0.0) {
-        // ρ_p = m_p/V_p < ρ_disconnected: the grains no longer touch, σ = 0.
+        // ρ_p = m_p/V_p < ρ_disconnected: the grains no longer touch, σ = 0, and
+        // V_p is held at m_p/ρ_disconnected: grains apart take up no more room
+        // than their loosest packing when they meet again. Without it, particles
+        // pushed off the axis to the shaft grew to J = V/V0 = 10, 20 and 36 at
+        // h = 1, 0.5 and 0.25 cm (their hoop stretch r/r0 ∝ 1/h), and a
+        // re-compacted one stayed stress-free long after its grains touched.
         const double limit = g.disconnected_below_kg_m3;
-        for (std::size_t p = first; p < last; ++p)
-          if (s.particles.mass[p] < limit * s.particles.volume[p]) stress[p].setZero();
+        for (std::size_t p = first; p < last; ++p) {
+          if (s.particles.mass[p] <= limit * s.particles.volume[p]) {  // at the limit: still apart
+            stress[p].setZero();
+            s.particles.volume[p] = s.particles.mass[p] / limit;
+          }
+        }
       }
     }
   }

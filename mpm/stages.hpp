@@ -9,6 +9,17 @@ namespace ffp::mpm {
 /// The stage list a simulation's settings call for (a model gets only what it needs).
 StageList build_stages(const Simulation& simulation);
 
+/// The cell means of the strain smoothing leave out the particles of a granular
+/// body that are at or below its disconnection density (by default half the
+/// initial density: J = V/V0 ≥ 2): they carry no stress and neither give nor
+/// take the cell's mean (review F2: pushed off the axis to the shaft, they
+/// reached J = 10–36 and diluted the mean stress there).
+/// Per body: the density (kg/m³) at or below which a particle is left out of the cell means (0: none).
+std::vector<double> cell_mean_density_limits(const Simulation& s);
+inline bool takes_part_in_cell_means(const Particles& P, std::size_t p, const std::vector<double>& limit) {
+  return P.mass[p] > limit[P.body[p]] * P.volume[p];
+}
+
 void reset_grid(Simulation& s);               ///< zero mass, momentum and forces of every field
 void compute_shape_functions(Simulation& s);  ///< S_ip, G_ip at start-of-step positions; strip bins
 void map_particles_to_grid(Simulation& s);    ///< m_i, p_i
@@ -19,7 +30,8 @@ void apply_surface_pressure(Simulation& s);   ///< nodal forces of pressures on 
 void apply_local_damping(Simulation& s);      ///< Cundall: f_i −= α |f_i| sign(v_i)
 void integrate_grid(Simulation& s);           ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
 void apply_boundary_conditions(Simulation& s);  ///< zero constrained velocity components
-void update_particles(Simulation& s);         ///< FLIP/PIC velocity, position
+void update_particles(Simulation& s);         ///< FLIP/PIC velocity; position (but musl_remapped)
+void move_particles(Simulation& s);           ///< musl_remapped: position from the remapped velocities
 void map_velocities_to_grid(Simulation& s);   ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i
 
 enum class StrainVelocity : std::uint8_t { updated_grid, remapped };

@@ -12,11 +12,12 @@
 ///               edge_radius_m 0.005, body_length_m 0.5,
 ///               rigid: rigid_body_force contact_impulse | soil_internal_force, external_force_N (+ up);
 ///               elastic: deformable {E_kPa, nu, particles_per_cell [2,2]}}
-///   contact    {delta_deg | rough: true, velocity_scaling 1 (Bardenhagen 2001; paper 0.75),
-///               detection_cells 0 (nodes this many min cells outside the outline also touch)}
+///   contact    {delta_deg | rough: true, velocity_scaling 0.75 (a cap on a correction's strain per step,
+///               Bardenhagen 2001 as the paper's code applies it), detection_cells 0.5 (nodes this many
+///               min cells outside the outline also touch: the contact surface centred on the outline)}
 ///   mesh       {min_cell_m 0.01, max_cell_m 3·min, below_cell_m 2·min, fine_radius_m 0.15,
 ///               band_below_m 0.05, fine_above_m 0.3, air_above_m 0.1, growth 1.2}
-///   solver     {shape_function gimp | linear, transfer musl | usl, flip_fraction 0.99,
+///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
 ///               pic_blend per_soil_step | per_step (the PIC share 1 − flip_fraction per soil CFL step
 ///               at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt: mpm/ffp_model.hpp),
 ///               courant 0.5, strain_smoothing true}
@@ -217,7 +218,8 @@ void PenetrometerJob::run(RunContext& context) {
   fields_due();
   double next_history = output.history_interval_s;
   double max_penetration = 0.0, intrusion = 0.0, dt_min = s.dt_s, peak_step = -std::numeric_limits<double>::infinity();
-  std::size_t most_contact_nodes = 0, most_disconnected = 0;
+  std::size_t most_contact_nodes = 0, most_disconnected = 0, most_inflated = 0;
+  double max_volume_ratio = 1.0;
   const double end = scene_.end_time_s;
   Progress progress(std::string(cpt() ? "cpt " : "ffp ") + name_, end, context.show_progress);
   ThreadGovernor threads;
@@ -233,6 +235,9 @@ void PenetrometerJob::run(RunContext& context) {
       if (s.time_s >= next_history * (1.0 - 1e-12) || s.time_s >= end * (1.0 - 1e-12)) {
         record();
         most_disconnected = std::max(most_disconnected, ffp.disconnected_soil_particles());
+        const mpm::FfpRun::VolumeRatios ratios = ffp.soil_volume_ratios();
+        max_volume_ratio = std::max(max_volume_ratio, ratios.max);
+        most_inflated = std::max(most_inflated, ratios.inflated);
         while (next_history <= s.time_s * (1.0 + 1e-12)) next_history += output.history_interval_s;
       }
       fields_due();
@@ -312,6 +317,8 @@ void PenetrometerJob::run(RunContext& context) {
   sum["max_soil_intrusion_cells"] = intrusion / h;
   sum["contact_nodes_max"] = most_contact_nodes;
   sum["disconnected_particles_max"] = most_disconnected;  // at the history rows
+  sum["max_volume_ratio"] = max_volume_ratio;            // largest V/V0 of a soil particle, at the history rows
+  sum["inflated_particles_max"] = most_inflated;         // most soil particles with V/V0 > 2 at one history row
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;
   sum["penetrometer"] = ffp.deformable() ? "linear_elastic" : "rigid";

@@ -99,8 +99,11 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   if (!rough && !c.has("delta_deg")) c.fail("delta_deg", "is required (the FFP–soil friction angle), or give rough: true");
   d.contact.rough = rough;
   if (!rough) d.contact.friction = std::tan(c.number("delta_deg", Range::half_open(0.0, 90.0, "degrees")) * kDegree);
-  d.contact.velocity_scaling = c.number("velocity_scaling", Range{0.0, 1.0, true, false, ""}, 1.0);
-  d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.0);
+  // A cap on the correction's strain per step (the paper's code: 0.75), 0 for none.
+  d.contact.velocity_scaling = c.number("velocity_scaling", Range::closed(0.0, 10.0, "(strain per step; 0: no cap)"), 0.75);
+  // Nodes up to half a cell outside the outline take part: the contact surface is then centred on the
+  // outline at every h (with 0, only nodes inside: the cone is 0.38 h thinner and soil intrudes 0.75 h).
+  d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.5);
   c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells)");
 }
 
@@ -130,7 +133,14 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
   mpm::SolverSettings& s = d.solver;
   s.shape_function = solver.choice("shape_function", {"linear", "gimp"}, "gimp") == "gimp" ? mpm::ShapeFunction::gimp
                                                                                            : mpm::ShapeFunction::linear;
-  s.transfer = solver.choice("transfer", {"musl", "usl"}, "musl") == "musl" ? mpm::Transfer::musl : mpm::Transfer::usl;
+  // USL by default: of the two consistent steps, the one whose final penetration
+  // changes by shrinking amounts as h halves (the report's convergence study).
+  {
+    const std::string transfer = solver.choice("transfer", {"usl", "musl", "musl_remapped"}, "usl");
+    s.transfer = transfer == "usl" ? mpm::Transfer::usl
+                 : transfer == "musl" ? mpm::Transfer::musl
+                                      : mpm::Transfer::musl_remapped;
+  }
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
   s.strain_smoothing = solver.boolean("strain_smoothing", true);

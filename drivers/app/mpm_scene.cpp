@@ -169,7 +169,12 @@ MpmScene read_mpm_scene(SceneReader& scene) {
   mpm::SolverSettings& s = model.solver;
   s.shape_function = solver.choice("shape_function", {"linear", "gimp"}, "gimp") == "gimp" ? mpm::ShapeFunction::gimp
                                                                                            : mpm::ShapeFunction::linear;
-  s.transfer = solver.choice("transfer", {"musl", "usl"}, "musl") == "musl" ? mpm::Transfer::musl : mpm::Transfer::usl;
+  {
+    const std::string transfer = solver.choice("transfer", {"usl", "musl", "musl_remapped"}, "musl");
+    s.transfer = transfer == "usl" ? mpm::Transfer::usl
+                 : transfer == "musl" ? mpm::Transfer::musl
+                                      : mpm::Transfer::musl_remapped;
+  }
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
   if (solver.has("dt_s")) s.fixed_dt_s = solver.number("dt_s", Range::positive(kMaxTime_s, "s"));

@@ -86,11 +86,20 @@ TEST_CASE("contact: the fully rough limit takes the surface's velocity", "[ffp][
   CHECK(after.z == Approx(surface.z).epsilon(kExact));
 }
 
-TEST_CASE("contact: the 2001 velocity scaling applies that fraction of the correction", "[ffp][contact]") {
+TEST_CASE("contact: the 2001 velocity scaling caps a correction's strain per step and leaves small ones whole",
+          "[ffp][contact]") {
   const Vector2 surface{0.0, -5.6};
   const Vector2 v = combine(-2.0, 3.0, surface);
-  const Vector2 full = contact_velocity(v, surface, kNormal, ContactLaw{kMu, false, 1.0});
-  const Vector2 scaled = contact_velocity(v, surface, kNormal, ContactLaw{kMu, false, 0.75});
-  CHECK(scaled.r == Approx(v.r + 0.75 * (full.r - v.r)).epsilon(kExact));
-  CHECK(scaled.z == Approx(v.z + 0.75 * (full.z - v.z)).epsilon(kExact));
+  const ContactLaw capped{kMu, false, 0.75};
+  const Vector2 full = contact_velocity(v, surface, kNormal, ContactLaw{kMu, false, 0.0});
+  const double correction = std::hypot(full.r - v.r, full.z - v.z);
+  // Below the cap (Δt/h such that |Δv|Δt/h = 0.06, the FFP's typical value): the whole correction.
+  const Vector2 small = contact_velocity(v, surface, kNormal, capped, 0.06 / correction);
+  CHECK(small.r == Approx(full.r).epsilon(kExact));
+  CHECK(small.z == Approx(full.z).epsilon(kExact));
+  // Twice the cap: half of the correction, so that its strain in the step is exactly the cap.
+  const Vector2 large = contact_velocity(v, surface, kNormal, capped, 1.5 / correction);
+  CHECK(large.r == Approx(v.r + 0.5 * (full.r - v.r)).epsilon(kExact));
+  CHECK(large.z == Approx(v.z + 0.5 * (full.z - v.z)).epsilon(kExact));
+  CHECK(std::hypot(large.r - v.r, large.z - v.z) * 1.5 / correction == Approx(0.75).epsilon(kExact));
 }

@@ -56,3 +56,26 @@ TEST_CASE("a disconnection density at or above the body's density is refused", "
   CHECK_THROWS_AS(Simulation(sand_block(kDensity)), std::invalid_argument);
   CHECK_THROWS_AS(Simulation(sand_block(-1.0)), std::invalid_argument);
 }
+
+TEST_CASE("a disconnected sand particle's volume is held at its limit and it stays out of the strain-smoothing means",
+          "[mpm][granular]") {
+  const double limit = 0.5 * kDensity;
+  Simulation s(sand_block(limit));
+  const Voigt compression = (Voigt() << -1e3, -1e3, -1e3, 0.0, 0.0, 0.0).finished();
+  for (auto& sigma : s.particles.stress) sigma = compression;
+  s.particles.volume[0] *= 5.0;  // J = 5, e.g. pushed off the axis to the shaft
+  update_stresses(s);
+  // Held at m/ρ_limit: J = 2, however far it was stretched.
+  CHECK(s.particles.volume[0] == Approx(s.particles.mass[0] / limit).epsilon(1e-15));
+  CHECK(s.particles.stress[0].norm() == 0.0);
+
+  // Its cell's mean stress is that of its connected neighbours (2 × 2 per cell):
+  // the stress-free particle neither dilutes it nor takes it in the internal force.
+  compute_shape_functions(s);
+  smooth_mean_stress(s);
+  const std::size_t cell = s.weights[0].cell;
+  std::size_t in_cell = 0;
+  for (std::size_t p = 0; p < s.particles.size(); ++p) in_cell += s.weights[p].cell == cell;
+  REQUIRE(in_cell == 4);
+  CHECK(s.cell_mean_stress[cell] == Approx(-1e3).epsilon(1e-12));
+}
