@@ -75,6 +75,25 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "peak [g]", "error [%]", "final penetration [cm]",
               "error [%]"},
              rows);
+    // What each level's run did to the soil: the contact's intrusion (it should
+    // shrink with h), the largest V/V0, the smallest step, and the soil's kinetic
+    // energy at the end (a level whose Δt collapses or whose soil gains energy with
+    // no work done on it is not a solution: flag it).
+    std::vector<std::vector<std::string>> health;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto s = results.summary(i);
+      if (s.empty()) continue;
+      const double dt0 = figure(results, i, "dt_s"), dt_min = figure(results, i, "dt_min_s");
+      const bool collapsed = std::isfinite(dt0) && std::isfinite(dt_min) && dt_min < 0.01 * dt0;
+      health.push_back({fixed(100 * kMinCells_m[i], 2), fixed(1000 * figure(results, i, "max_soil_intrusion_m"), 2),
+                        fixed(figure(results, i, "max_soil_intrusion_cells"), 2),
+                        fixed(figure(results, i, "max_volume_ratio"), 2),
+                        fixed(figure(results, i, "inflated_particles_max"), 0), scientific(dt_min),
+                        collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
+    }
+    md.table({"min cell [cm]", "max intrusion [mm]", "[cells]", "max V/V0", "particles at V/V0 ≥ 2", "Δt_min [s]",
+              "level"},
+             health);
     auto describe = [](const char* what, const Extrapolation& e, double scale, const char* unit) {
       return std::string(what) + ": reference " + fixed(scale * e.value, 2) + " " + unit +
              (std::isfinite(e.order) ? " (Richardson, observed order " + fixed(e.order, 2) + ")"
