@@ -43,6 +43,7 @@
 ///                        off; mpm 2e-4). Set it near the specimen's jitter in W: tighter
 ///                        costs runs, looser costs η where W is flat in η (at 2 cm
 ///                        1e-3 of W is ±20 % of η)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -54,6 +55,7 @@
 #include "calibration/softening_calibration.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/kinds.hpp"
+#include "drivers/app/memory_check.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/scene/material_scene.hpp"
@@ -63,6 +65,22 @@
 namespace ffp {
 
 namespace {
+
+/// The MPM specimen's size before it is built: the grid spans the specimen and
+/// its radial margin (plus a platen cell above and below), the particles fill
+/// the specimen at particles_per_cell² per cell.
+mpm::ModelSize specimen_size(const MpmTriaxialConfig& m) {
+  const double radius = 0.5 * m.specimen.diameter_m;
+  const double cells_r = std::ceil(radius * (1.0 + m.radial_margin) / m.cell_m) + 1.0;
+  const double cells_z = std::ceil(m.specimen.height_m / m.cell_m) + 2.0;
+  const double specimen_cells = std::ceil(radius / m.cell_m) * std::ceil(m.specimen.height_m / m.cell_m);
+  mpm::ModelSize size;
+  size.nodes = static_cast<std::size_t>(std::min(1e15, (cells_r + 1.0) * (cells_z + 1.0)));
+  size.particles = static_cast<std::size_t>(
+      std::min(1e15, specimen_cells * m.particles_per_cell * m.particles_per_cell));
+  return size;
+}
+
 
 namespace fs = std::filesystem;
 
@@ -129,6 +147,7 @@ class CalibrationJob : public Job {
       const MpmTriaxialConfig& m = spec_.mpm;
       out << "MPM specimen with " << m.cell_m << " m cells (" << to_string(m.platens) << " platens at "
           << m.platen_velocity_m_s << " m/s)\n";
+      describe_memory(out, specimen_size(m));
     }
   }
 
@@ -502,6 +521,8 @@ std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const fs::path& sc
     m.output_strain_step = specimen.number(
         "output_strain_step", Range::positive(0.5 * m.axial_strain_max, "(at most half the lab's last strain)"), 1e-3);
     m.radial_margin = specimen.number("radial_margin", Range::positive(10.0), 0.5);
+    require_fits_in_memory(specimen_size(m), "specimen.cell_m",
+                           "use a larger specimen.cell_m or fewer specimen.particles_per_cell");
     specimen.finish("an mpm specimen (type, height_m, diameter_m, cell_m, platen_velocity_m_s, platens, "
                     "shape_function, courant, flip_fraction, particles_per_cell, density_kg_m3, output_strain_step, "
                     "radial_margin)");

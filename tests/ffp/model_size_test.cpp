@@ -94,10 +94,21 @@ TEST_CASE("under a 3 GB address-space limit a 0.25 mm FFP mesh is refused and ff
 
 TEST_CASE("ffp check prints the memory estimate for every MPM kind", "[ffp][size]") {
   ScratchDir scratch;
-  for (const char* scene : {"ffp_reference.json", "cpt_reference.json", "mpm_wave_column.json", "ffp_elastic.json"}) {
+  for (const char* scene : {"ffp_reference.json", "cpt_reference.json", "mpm_wave_column.json", "ffp_elastic.json",
+                            "calibration_dr15_mpm_1cm.json"}) {
     const ProgramResult r = run_program({"check", scene_path(scene)}, scratch.path());
     INFO(scene << ": " << r.err);
     CHECK(r.exit_code == 0);
     CHECK(r.out.find("memory: about") != std::string::npos);
   }
+}
+
+TEST_CASE("an MPM calibration specimen too fine to fit is refused before any run, naming specimen.cell_m",
+          "[ffp][size]") {
+  ScratchDir scratch;
+  const ProgramResult r = run_program(
+      {"check", scene_path("calibration_dr15_mpm_1cm.json"), "--set", "specimen.cell_m=1e-5"}, scratch.path());
+  INFO(r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("specimen.cell_m") != std::string::npos);
 }
