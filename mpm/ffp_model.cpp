@@ -60,6 +60,7 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   };
   need(h > 0.0 && m.max_cell_m >= h && m.below_cell_m >= h, "mesh: need 0 < min_cell ≤ below_cell and ≤ max_cell");
   need(m.growth > 1.0 && m.growth <= 2.0, "mesh: growth must be in (1, 2]");
+  need(m.tip_offset_cells >= 0.0 && m.tip_offset_cells < 1.0, "mesh: tip_offset_cells must be in [0, 1)");
   need(R > 0.0 && R + h <= d.soil.radius_m, "the penetrometer's base radius plus a cell must fit inside the chamber");
   need(m.fine_radius_m > R, "mesh: fine_radius must exceed the penetrometer's base radius");
   need(m.band_below_m > 0.0 && m.band_below_m + 2.0 * h < d.soil.depth_m,
@@ -82,7 +83,11 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   // Vertical, bottom to top: compressing zone, fine band (below and above the
   // tip), graded band along the body up to its top plus a cell, stretching air.
   const int n_below = std::max(1, static_cast<int>(std::lround(m.band_below_m / h)));
-  const double band_bottom = -n_below * h;
+  // The band's rows sit tip_offset_cells·h above the tip's row position: 0 puts the
+  // tip on a node row, 0.5 half a cell between two (the staircase bias of a
+  // non-conforming cone is measured by comparing the two).
+  const double offset = m.tip_offset_cells * h;
+  const double band_bottom = -n_below * h + offset;
   g.z_nodes_m = {-d.soil.depth_m};
   const double compress = d.soil.depth_m + band_bottom;
   append_uniform(g.z_nodes_m, band_bottom, std::max(2, static_cast<int>(std::lround(compress / m.below_cell_m))));
@@ -90,7 +95,7 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   const double top = d.shape.total_length_m();
   // Fine cells above the tip, leaving at least one cell's height below the body's top (no sliver cell).
   const int n_above = std::clamp(static_cast<int>(std::lround(m.fine_above_m / h)), 1, std::max(1, cells_in(top, h) - 1));
-  append_uniform(g.z_nodes_m, n_above * h, n_above + n_below);
+  append_uniform(g.z_nodes_m, n_above * h + offset, n_above + n_below);
   append_graded(g.z_nodes_m, top, h * m.growth, m.max_cell_m, m.growth, h);
   const double last_cell = g.z_nodes_m.back() - g.z_nodes_m[g.z_nodes_m.size() - 2];
   g.z_nodes_m.push_back(g.z_nodes_m.back() + last_cell);

@@ -52,6 +52,7 @@ struct FfpMesh {
   double below_cell_m = 0.02;   ///< initial cells of the compressing zone (they shrink as the FFP goes down)
   double air_above_m = 0.1;     ///< stretching zone above the penetrometer's top
   double growth = 1.2;          ///< largest ratio of neighbouring cells in graded zones
+  double tip_offset_cells = 0.0;  ///< the band's node rows this many cells above the tip's (0: the tip on a row)
 };
 
 struct DeformableFfp {

@@ -121,11 +121,13 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   mesh.fine_above_m = m.number("fine_above_m", Range::positive(kMaxLength_m, "m"), 0.3);
   mesh.air_above_m = m.number("air_above_m", Range::positive(kMaxLength_m, "m"), 0.1);
   mesh.growth = m.number("growth", Range{1.0, 2.0, true, false, ""}, 1.2);
+  mesh.tip_offset_cells = m.number("tip_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0);
   if (d.shape.base_radius_m + h > d.soil.radius_m)
     m.fail("min_cell_m", "leaves no cell between the penetrometer and the chamber wall");
   if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)
     m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
-  m.finish("mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth)");
+  m.finish("mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth, "
+           "tip_offset_cells)");
 }
 
 void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {

@@ -61,6 +61,25 @@ TEST_CASE("FFP grid: a node on the base radius, fine cells no smaller than min_c
   }
 }
 
+TEST_CASE("FFP grid: tip_offset_cells puts the tip that far between two node rows of the band", "[ffp][moving_mesh]") {
+  FfpDescription d;
+  for (double h : {0.02, 0.01}) {
+    d.mesh.min_cell_m = h;
+    d.mesh.max_cell_m = 3 * h;
+    d.mesh.below_cell_m = 2 * h;
+    d.mesh.tip_offset_cells = 0.5;
+    const FfpGridLayout g = ffp_grid_layout(d);
+    double nearest = 1.0;
+    for (int j = g.band_first; j <= g.band_last; ++j) nearest = std::min(nearest, std::abs(g.z_nodes_m[j]));
+    INFO("min_cell_m = " << h);
+    CHECK(nearest == Approx(0.5 * h).epsilon(1e-9));  // the tip (z = 0) half a cell from the nearest row
+    CHECK(g.z_nodes_m[g.band_first] < 0.0);
+    CHECK(g.z_nodes_m[g.band_last] > d.shape.total_length_m());
+  }
+  d.mesh.tip_offset_cells = 1.0;
+  CHECK_THROWS_AS(ffp_grid_layout(d), std::invalid_argument);
+}
+
 TEST_CASE("FFP run: the moving band follows the rigid penetrometer and no particle leaves the grid",
           "[ffp][moving_mesh]") {
   FfpDescription d;
