@@ -65,6 +65,15 @@ bool wait_for_entry(const fs::path& folder, const std::string& fragment) {
   return false;
 }
 
+/// True once no entry under `folder` has `fragment` in its name, within ~5 s.
+bool wait_until_gone(const fs::path& folder, const std::string& fragment) {
+  for (int i = 0; i < 250; ++i) {
+    if (!has_entry(folder, fragment)) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 void kill_hard(pid_t pid) {
   ::kill(pid, SIGKILL);
   int status = 0;
@@ -176,12 +185,7 @@ TEST_CASE("SIGKILL during a sweep stops its runs, leaves no finished-looking run
   REQUIRE(wait_for_entry(scratch.path() / "sw", ".tmp-"));
   kill_hard(sweep);
   // The runs the sweep started see it die (SIGTERM) and remove their temporary folders.
-  bool runs_gone = false;
-  for (int i = 0; i < 250 && !runs_gone; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    runs_gone = !has_entry(scratch.path() / "sw", ".tmp-");
-  }
-  CHECK(runs_gone);
+  CHECK(wait_until_gone(scratch.path() / "sw", ".tmp-"));
   CHECK_FALSE(fs::exists(scratch.path() / "sw" / "sweep.csv"));
   for (const auto& entry : fs::directory_iterator(scratch.path() / "sw" / "runs"))
     if (entry.is_directory()) CHECK_FALSE(fs::exists(entry.path() / "summary.json"));
@@ -237,12 +241,8 @@ TEST_CASE("SIGKILL during a report leaves no report, no finished-looking cache e
   const pid_t report = start_ffp(kCalibrationReport, scratch.path());
   REQUIRE(wait_for_entry(scratch.path() / "cache", ".tmp-"));
   kill_hard(report);
-  bool runs_gone = false;
-  for (int i = 0; i < 250 && !runs_gone; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    runs_gone = !has_entry(scratch.path() / "cache", ".tmp-");
-  }
-  CHECK(runs_gone);
+  // The runs the report started see it die (SIGTERM) and remove their temporary folders.
+  CHECK(wait_until_gone(scratch.path() / "cache", ".tmp-"));
   CHECK_FALSE(fs::exists(scratch.path() / "rep"));
   for (const auto& entry : fs::directory_iterator(scratch.path() / "cache"))
     if (entry.is_directory() && entry.path().filename().string().rfind("calibration_dr00", 0) == 0)

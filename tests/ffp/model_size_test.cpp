@@ -9,6 +9,7 @@
 
 #include <sys/wait.h>
 
+#include "coarse_ffp.hpp"
 #include "ffp_test_support.hpp"
 #include "mpm/ffp_model.hpp"
 #include "mpm/model_size.hpp"
@@ -18,18 +19,6 @@ using namespace ffp::test;
 using namespace ffp::mpm;
 
 namespace {
-
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
-
-FfpDescription coarse_ffp() {
-  FfpDescription d;
-  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * kDegree, 0.0, 0.0});
-  d.mesh.min_cell_m = 0.02;
-  d.mesh.max_cell_m = 0.06;
-  d.mesh.below_cell_m = 0.04;
-  d.contact.friction = std::tan(20.0 * kDegree);
-  return d;
-}
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);

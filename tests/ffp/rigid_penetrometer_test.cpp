@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "coarse_ffp.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/ffp_model.hpp"
 #include "mpm/rigid_penetrometer.hpp"
@@ -15,22 +16,12 @@
 
 using namespace ffp;
 using namespace ffp::mpm;
+using ffp::test::coarse_ffp;
+using ffp::test::kDegree;
 
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr double kG = 9.81;
-
-/// The paper's sand (Table 1) and FFP on a 2 cm mesh: the tests' coarse reference.
-FfpDescription coarse_ffp() {
-  FfpDescription d;
-  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * kDegree, 0.0, 0.0});
-  d.mesh.min_cell_m = 0.02;
-  d.mesh.max_cell_m = 0.06;
-  d.mesh.below_cell_m = 0.04;
-  d.contact.friction = std::tan(20.0 * kDegree);
-  return d;
-}
 
 /// Least-squares slope of y(x).
 double slope(const std::vector<double>& x, const std::vector<double>& y) {
