@@ -111,7 +111,7 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   ModelDescription m;
   m.r_nodes_m = g.r_nodes_m;
   m.z_nodes_m = g.z_nodes_m;
-  m.gravity_m_s2 = d.gravity_m_s2;
+  if (d.gravity_m_s2 > 0.0) m.gravity_m_s2 = d.gravity_m_s2;  // weightless: no gravity stage, no K0 stress
   m.solver = d.solver;
   // Paper Fig. 4b: lateral wall on rollers, bottom and top fixed (the top is in the air).
   m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::fixed};
@@ -119,7 +119,9 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
     throw std::invalid_argument("particles per cell must be ≥ 1");
   m.bodies.push_back(BodyDescription{"soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0},
-                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0, GeostaticStress{s.k0, 0.0},
+                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
+                                     d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0})
+                                                          : std::nullopt,
                                      s.disconnected_density_ratio * s.density_kg_m3});
   const double h = d.mesh.min_cell_m;
   m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, h / s.near_ppc_r,

@@ -6,7 +6,11 @@
 
 namespace ffp::mpm {
 
-double PenetrometerShape::cone_height_m() const { return base_radius_m / std::tan(0.5 * cone_apex_angle_rad); }
+bool PenetrometerShape::flat_tip() const { return cone_apex_angle_rad >= std::numbers::pi; }
+
+double PenetrometerShape::cone_height_m() const {
+  return flat_tip() ? 0.0 : base_radius_m / std::tan(0.5 * cone_apex_angle_rad);
+}
 
 double PenetrometerShape::volume_m3() const {
   // Integrate π r(h)² dh numerically over the outline (the fillet has no
@@ -24,8 +28,9 @@ double PenetrometerShape::volume_m3() const {
 
 PenetrometerGeometry::PenetrometerGeometry(const PenetrometerShape& shape) : shape_(shape) {
   const double half = 0.5 * shape.cone_apex_angle_rad;
-  sin_half_ = std::sin(half);
-  cos_half_ = std::cos(half);
+  // A flat tip exactly (cos(π/2) is 6e-17 in floating point, not 0).
+  sin_half_ = shape.flat_tip() ? 1.0 : std::sin(half);
+  cos_half_ = shape.flat_tip() ? 0.0 : std::cos(half);
   const double radius = shape.base_radius_m;
   const double fillet = std::clamp(shape.edge_radius_m, 0.0, 0.99 * radius);
   // Fillet centre: a distance `fillet` inside both the cylinder r = R and the
@@ -39,7 +44,7 @@ PenetrometerGeometry::PenetrometerGeometry(const PenetrometerShape& shape) : sha
 
 double PenetrometerGeometry::radius_at(double h) const {
   if (h < 0.0 || h > top_z_) return 0.0;
-  if (h <= cone_end_z_) return h * sin_half_ / cos_half_;
+  if (h <= cone_end_z_) return cos_half_ > 0.0 ? h * sin_half_ / cos_half_ : cone_end_r_;
   if (h < fillet_center_z_) {
     const double fillet = shape_.base_radius_m - fillet_center_r_;
     const double dz = h - fillet_center_z_;

@@ -1,16 +1,18 @@
 #pragma once
-/// The penetrometer's exact outline in the (r, z) half-plane: a cone tip, a
-/// rounded edge and a cylindrical body with a flat top. The contact stage takes
+/// The penetrometer's exact outline in the (r, z) half-plane: a cone tip (or a
+/// flat one: apex angle 180°, the punch of the bearing benchmarks), a rounded
+/// edge and a cylindrical body with a flat top. The contact stage takes
 /// its normals from here rather than from a noisy mass gradient.
 namespace ffp::mpm {
 
 struct PenetrometerShape {
-  double cone_apex_angle_rad = 1.0471975511965976;  ///< full apex angle (60°)
+  double cone_apex_angle_rad = 1.0471975511965976;  ///< full apex angle (60°; π: a flat tip)
   double base_radius_m = 0.04375;
   double edge_radius_m = 0.005;  ///< fillet between cone and body (0: sharp)
   double body_length_m = 0.5;    ///< cylinder above the cone's base
 
-  double cone_height_m() const;  ///< R / tan(apex/2), 7.58 cm for the BlueDrop
+  bool flat_tip() const;         ///< apex angle π: a flat circular base (a punch)
+  double cone_height_m() const;  ///< R / tan(apex/2), 7.58 cm for the BlueDrop; 0 for a flat tip
   double total_length_m() const { return cone_height_m() + body_length_m; }
   double volume_m3() const;      ///< of the solid of revolution (fillet included)
 };

@@ -36,6 +36,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <ostream>
 
 #include "drivers/app/ffp_scene.hpp"
@@ -179,6 +180,9 @@ void PenetrometerJob::run(RunContext& context) {
   if (!cpt()) columns.push_back("deceleration_g");
   for (const char* c : {"reaction_N", "contact_nodes", "soil_kinetic_energy_J", "dt_s", "impulse_N_s", "soil_intrusion_m"})
     columns.emplace_back(c);
+  // The reaction over the base area πR²: a cone's q_c (shaft friction included), a punch's mean pressure.
+  const double base_area_m2 = std::numbers::pi * std::pow(scene_.model.shape.base_radius_m, 2);
+  if (cpt()) columns.emplace_back("mean_pressure_kPa");
   CsvTable history(columns);
   std::vector<double> t_row, depth_row, velocity_row, deceleration_row, reaction_row, impulse_row;
   double last_t = 0.0, last_impulse = 0.0;
@@ -193,6 +197,7 @@ void PenetrometerJob::run(RunContext& context) {
     if (!cpt()) row.push_back(deceleration);
     row.insert(row.end(), {reaction, static_cast<double>(st.contact_nodes), mpm::measure_body(s, ffp.soil_body()).kinetic_energy_J,
                            s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
+    if (cpt()) row.push_back(1e-3 * reaction / base_area_m2);
     history.add_row(row);
     t_row.push_back(s.time_s);
     depth_row.push_back(ffp.penetration_m());
@@ -300,6 +305,17 @@ void PenetrometerJob::run(RunContext& context) {
   } else {
     sum["push_velocity_m_s"] = v0;
     sum["time_of_peak_s"] = t_row[peak_reaction_row];
+    if (scene_.bearing) {
+      // The plateau mean pressure: the mean over the settlement window, from the exact impulse.
+      const BearingPlateau& b = *scene_.bearing;
+      const double R = scene_.model.shape.base_radius_m;
+      const double t1 = b.from_ratio * R / v0, t2 = b.to_ratio * R / v0;
+      const double pressure_Pa = (impulse_at(t2) - impulse_at(t1)) / (t2 - t1) / base_area_m2;
+      sum["plateau_mean_pressure_kPa"] = 1e-3 * pressure_Pa;
+      sum["plateau_settlement_ratio"] = {b.from_ratio, b.to_ratio};
+      sum["bearing_factor"] = pressure_Pa / b.cohesion_Pa;
+      sum["cohesion_kPa"] = 1e-3 * b.cohesion_Pa;
+    }
   }
   sum["peak_reaction_N"] = reaction_row[peak_reaction_row];
   sum["depth_of_peak_reaction_m"] = depth_row[peak_reaction_row];
@@ -338,7 +354,20 @@ void PenetrometerJob::run(RunContext& context) {
     p.key_position = "off";
     return p;
   };
-  if (cpt()) {
+  if (cpt() && scene_.bearing) {
+    // Pressure–settlement curve, normalised: p/c' against s/R, the plateau window marked.
+    const double R = scene_.model.shape.base_radius_m, c = scene_.bearing->cohesion_Pa;
+    std::vector<double> ratio(rows), factor(rows);
+    for (std::size_t k = 0; k < rows; ++k) {
+      ratio[k] = depth_row[k] / R;
+      factor[k] = reaction_row[k] / base_area_m2 / c;
+    }
+    Plot p = plot(ratio, factor, "settlement / radius s/R", "mean pressure / c'", name_ + ": pressure–settlement");
+    const double n = sum["bearing_factor"].get<double>();
+    p.series.push_back({{scene_.bearing->from_ratio, scene_.bearing->to_ratio}, {n, n}, "plateau mean"});
+    p.key_position = "bottom right";
+    write_png(p, plots / "pressure_settlement.png");
+  } else if (cpt()) {
     Plot p = plot(depth_row, reaction_row, "penetration (m)", "reaction F_0 (N)", name_ + ": static reaction profile");
     write_png(p, plots / "reaction_profile.png");
   } else {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <variant>
 
 #include "drivers/scene/material_scene.hpp"
 
@@ -20,9 +22,13 @@ std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, i
   return {static_cast<int>(ppc[0]), static_cast<int>(ppc[1])};
 }
 
-void read_soil(SceneReader& scene, mpm::FfpDescription& d) {
+/// Returns the material's cohesion c' (Pa; 0 for a sand or an elastic soil).
+double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   SceneReader material = scene.object("material", true);
   const MaterialSpec spec = read_material(material, DensityRule::required);
+  double cohesion_Pa = 0.0;
+  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) cohesion_Pa = mc->cohesion_Pa;
+  if (const auto* ss = std::get_if<StrainSofteningParameters>(&spec.parameters)) cohesion_Pa = ss->cohesion_peak_Pa;
   d.soil.law = spec.law();
   d.soil.density_kg_m3 = *spec.density_kg_m3;
   SceneReader soil = scene.object("soil");
@@ -38,13 +44,20 @@ void read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
   soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near, particles_per_cell_far, near_radius_m, "
               "near_depth_m, disconnected_density_ratio)");
+  return cohesion_Pa;
 }
 
 /// Returns the push velocity (cpt) or the impact velocity (ffp), + down.
 double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {
   SceneReader f = scene.object("ffp", true);
   mpm::PenetrometerShape& shape = d.shape;
-  shape.cone_apex_angle_rad = f.number("cone_apex_angle_deg", Range::open(0.0, 180.0, "degrees"), 60.0) * kDegree;
+  // A flat tip is the rigid circular punch of the bearing-capacity benchmarks (punch_smooth/rough.json).
+  if (f.choice("tip", {"cone", "flat"}, "cone") == "flat") {
+    if (f.has("cone_apex_angle_deg")) f.fail("cone_apex_angle_deg", "a flat tip has no cone (give tip: cone for one)");
+    shape.cone_apex_angle_rad = std::numbers::pi;
+  } else {
+    shape.cone_apex_angle_rad = f.number("cone_apex_angle_deg", Range::open(0.0, 180.0, "degrees"), 60.0) * kDegree;
+  }
   shape.base_radius_m = f.number("base_radius_m", Range::positive(kMaxLength_m, "m"), 0.04375);
   shape.edge_radius_m =
       f.number("edge_radius_m", Range::half_open(0.0, shape.base_radius_m, "m (< base_radius_m)"), 0.005);
@@ -58,7 +71,7 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
     speed = f.number("push_velocity_m_s", Range::positive(100.0, "m/s (downward)"));
     d.prescribed = true;
     d.velocity_m_s = -speed;
-    f.finish("the ffp of a cpt scene (cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, push_velocity_m_s)");
+    f.finish("the ffp of a cpt scene (tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, push_velocity_m_s)");
     return speed;
   }
   if (f.has("push_velocity_m_s")) f.fail("push_velocity_m_s", "a prescribed push is kind cpt; an ffp falls freely from impact_velocity_m_s");
@@ -86,7 +99,7 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
                   : mpm::RigidBodyForce::soil_internal_force;
     d.external_force_N = f.number("external_force_N", Range::closed(-1e9, 1e9, "N (+ up)"), 0.0);
   }
-  f.finish("ffp (mass_kg, impact_velocity_m_s, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
+  f.finish("ffp (mass_kg, impact_velocity_m_s, tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
            "deformable, rigid_body_force, external_force_N)");
   return speed;
 }
@@ -166,8 +179,9 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
   FfpScene out;
   out.kind = kind;
   mpm::FfpDescription& d = out.model;
-  d.gravity_m_s2 = scene.number("gravity_m_s2", Range::positive(1e3, "m/s²"), 9.81);
-  read_soil(scene, d);
+  // 0: a weightless soil (the punch benchmarks); the geostatic stage and gravity then drop out.
+  d.gravity_m_s2 = scene.number("gravity_m_s2", Range::non_negative(1e3, "m/s²"), 9.81);
+  const double cohesion_Pa = read_soil(scene, d);
   const double speed = read_penetrometer(scene, d, kind);
   read_contact(scene, d);
   read_mesh(scene, d);
@@ -184,6 +198,23 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
     }
   } else {
     out.end_time_s = scene.number("end_time_s", Range::positive(kMaxTime_s, "s"));
+  }
+  if (kind == PenetrometerKind::cpt && d.shape.flat_tip() && cohesion_Pa > 0.0) {
+    // A flat punch in a cohesive soil: the bearing benchmark (punch_smooth/rough.json).
+    BearingPlateau b;
+    b.cohesion_Pa = cohesion_Pa;
+    if (auto window = scene.optional_numbers("plateau_settlement_ratio", Range::open(0.0, 1.0, "(settlement / base_radius_m)"), 2, 2)) {
+      b.from_ratio = (*window)[0];
+      b.to_ratio = (*window)[1];
+      if (b.to_ratio <= b.from_ratio) scene.fail("plateau_settlement_ratio", "must be [from, to] with from < to");
+    }
+    const double window_end_m = b.to_ratio * d.shape.base_radius_m;
+    if (window_end_m > speed * out.end_time_s * (1.0 + 1e-9))
+      scene.fail("plateau_settlement_ratio", "the window ends at a settlement of " + std::to_string(window_end_m) +
+                                                 " m, beyond the push (end_depth_m)");
+    out.bearing = b;
+  } else if (scene.has("plateau_settlement_ratio")) {
+    scene.fail("plateau_settlement_ratio", "applies to a cpt scene with ffp.tip flat in a soil with c_peak_kPa > 0 only");
   }
 
   SceneReader output = scene.object("output");

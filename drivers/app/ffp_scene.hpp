@@ -3,6 +3,7 @@
 /// description (mpm/ffp_model.hpp) and the run's output settings. The keys are
 /// listed in ffp_job.cpp (ffp) and cpt_job.cpp (cpt).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,19 @@ struct FfpOutput {
   double strain_colour_max = 0.5;     ///< top of the deviatoric-strain colour scale in the PNGs
 };
 
+/// The bearing benchmark of a flat punch on a Tresca soil (cpt, tip flat, φ' = 0, c' > 0): the
+/// plateau mean pressure is the mean over a settlement window, read from the exact impulse.
+struct BearingPlateau {
+  double cohesion_Pa = 0.0;
+  double from_ratio = 0.04, to_ratio = 0.06;  ///< settlement window / base radius
+};
+
 struct FfpScene {
   PenetrometerKind kind = PenetrometerKind::ffp;
   mpm::FfpDescription model;
   double end_time_s = 0.0;
   FfpOutput output;
+  std::optional<BearingPlateau> bearing;  ///< flat-tip cpt in a cohesive soil only
 };
 
 /// Reads every key after kind/name and finish()es the scene. SceneError on bad input.

@@ -44,8 +44,13 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
     return spec;
   }
 
-  const double phi_deg = m.number("phi_peak_deg", Range::open(0.0, 90.0, "degrees"));
+  const double phi_deg = m.number("phi_peak_deg", Range::half_open(0.0, 90.0, "degrees"));
   const double cohesion_kPa = m.number("c_peak_kPa", Range::non_negative(kMaxCohesion_kPa, "kPa"), 0.0);
+  // φ' = 0 is Tresca, a clay's undrained strength c' = s_u: only with a cohesion, and only for MC
+  // (SSMC softens φ' towards φ'_r > 0).
+  if (phi_deg == 0.0 && (spec.model != "mohr_coulomb" || cohesion_kPa == 0.0))
+    m.fail("phi_peak_deg", spec.model == "mohr_coulomb" ? "0 (Tresca) needs c_peak_kPa > 0; otherwise 0 < φ' < 90 degrees"
+                                                        : "must be in (0, 90) degrees for ssmc (φ' = 0 with c' > 0 is mohr_coulomb)");
 
   if (spec.model == "mohr_coulomb") {
     MohrCoulombParameters p;

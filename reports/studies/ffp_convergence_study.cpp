@@ -13,22 +13,6 @@ namespace {
 
 const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
 
-struct Extrapolation {
-  double value;
-  double order;  // NaN when the finest value is used instead
-};
-
-/// Richardson from three meshes halving in size: order p = log2((Q_2h − Q_h)/(Q_h − Q_h/2)).
-/// Accepted only for a monotone sequence with 0.3 < p < 4; else the finest value.
-Extrapolation richardson(double coarse, double medium, double fine) {
-  const double a = coarse - medium, b = medium - fine;
-  if (std::isfinite(a) && std::isfinite(b) && a * b > 0 && std::abs(b) < std::abs(a)) {
-    const double p = std::log2(a / b);
-    if (p > 0.3 && p < 4.0) return {fine - b / (std::pow(2.0, p) - 1.0), p};
-  }
-  return {fine, std::nan("")};
-}
-
 }  // namespace
 
 Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {

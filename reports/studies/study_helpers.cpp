@@ -31,4 +31,13 @@ RunRequest scene_run(const fs::path& scenes_dir, const std::string& scene_file, 
   return RunRequest{label, scenes_dir / scene_file, std::move(overrides)};
 }
 
+Extrapolation richardson(double coarse, double medium, double fine) {
+  const double a = coarse - medium, b = medium - fine;
+  if (std::isfinite(a) && std::isfinite(b) && a * b > 0 && std::abs(b) < std::abs(a)) {
+    const double p = std::log2(a / b);
+    if (p > 0.3 && p < 4.0) return {fine - b / (std::pow(2.0, p) - 1.0), p};
+  }
+  return {fine, std::nan("")};
+}
+
 }  // namespace ffp

@@ -19,4 +19,14 @@ std::string scientific(double value, int digits = 2);
 RunRequest scene_run(const std::filesystem::path& scenes_dir, const std::string& scene_file, const std::string& label,
                      std::vector<std::string> overrides = {});
 
+/// A value extrapolated from three meshes halving in size, and its observed order.
+struct Extrapolation {
+  double value;
+  double order;  ///< NaN when the finest value is used instead
+};
+
+/// Richardson from three meshes halving in size: order p = log2((Q_2h − Q_h)/(Q_h − Q_h/2)).
+/// Accepted only for a monotone sequence with 0.3 < p < 4; else the finest value.
+Extrapolation richardson(double coarse, double medium, double fine);
+
 }  // namespace ffp

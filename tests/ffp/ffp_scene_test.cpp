@@ -39,14 +39,14 @@ TEST_CASE("every shipped ffp and cpt scene is valid", "[ffp][scene]") {
   int scenes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(FFP_SOURCE_DIR) + "/data/scenes")) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("ffp_", 0) != 0 && name.rfind("cpt_", 0) != 0) continue;
+    if (name.rfind("ffp_", 0) != 0 && name.rfind("cpt_", 0) != 0 && name.rfind("punch_", 0) != 0) continue;
     ScratchDir scratch;
     const ProgramResult r = run_program({"check", entry.path().string()}, scratch.path());
     INFO(name << ": " << r.err);
     CHECK(r.exit_code == 0);
     ++scenes;
   }
-  CHECK(scenes >= 9);
+  CHECK(scenes >= 11);
 }
 
 TEST_CASE("a rigid FFP with stiffness keys is refused", "[ffp][scene]") {
@@ -111,4 +111,30 @@ TEST_CASE("the sand's disconnection density ratio must be at least 0 and below 1
   json off = reference();
   off["soil"]["disconnected_density_ratio"] = 0.0;  // the rule switched off
   CHECK(check(off).exit_code == 0);
+}
+
+TEST_CASE("a flat punch has no cone angle and its plateau window lies within the push of a flat tip in a cohesive soil",
+          "[ffp][scene][punch]") {
+  const json punch = read_json(scene_path("punch_smooth.json"));
+  json s = punch;
+  s["ffp"]["cone_apex_angle_deg"] = 60;
+  refused(s, "ffp.cone_apex_angle_deg", "flat tip has no cone");
+  s = punch;
+  s["plateau_settlement_ratio"] = {0.04, 0.2};  // 0.2 R = 1 cm, the push is 3 mm
+  refused(s, "plateau_settlement_ratio", "beyond the push");
+  s = punch;
+  s["plateau_settlement_ratio"] = {0.06, 0.04};
+  refused(s, "plateau_settlement_ratio", "from < to");
+  json c = cpt();
+  c["plateau_settlement_ratio"] = {0.04, 0.06};
+  refused(c, "plateau_settlement_ratio", "flat in a soil with c_peak_kPa > 0");
+}
+
+TEST_CASE("phi_peak_deg = 0 (Tresca) is allowed for mohr_coulomb with a cohesion only", "[ffp][scene][punch]") {
+  json s = read_json(scene_path("punch_smooth.json"));
+  s["material"]["c_peak_kPa"] = 0;
+  refused(s, "material.phi_peak_deg", "needs c_peak_kPa > 0");
+  json c = cpt();  // ssmc
+  c["material"]["phi_peak_deg"] = 0;
+  refused(c, "material.phi_peak_deg", "for ssmc");
 }

@@ -83,3 +83,26 @@ TEST_CASE("inside and outside agree with the outline radius", "[ffp][geometry]")
     CHECK(std::abs(g.query(r, h, 0.0).signed_distance_m) < 1e-9);
   }
 }
+
+TEST_CASE("a flat tip (apex 180°) is a disc: no cone, a downward normal below it, the body's full radius at once",
+          "[ffp][geometry][punch]") {
+  PenetrometerShape punch;
+  punch.cone_apex_angle_rad = std::numbers::pi;
+  punch.base_radius_m = 0.05;
+  punch.edge_radius_m = 0.0;
+  punch.body_length_m = 0.1;
+  CHECK(punch.flat_tip());
+  CHECK(punch.cone_height_m() == 0.0);
+  const PenetrometerGeometry g(punch);
+  CHECK(g.radius_at(0.0) == Approx(0.05).epsilon(kTight));
+  CHECK(g.radius_at(0.05) == Approx(0.05).epsilon(kTight));
+  for (double r : {0.0, 0.02, 0.049}) {
+    const auto q = g.query(r, -0.004, 0.0);
+    CHECK(q.signed_distance_m == Approx(0.004).epsilon(kTight));
+    CHECK(q.normal_r == Approx(0.0).margin(kTight));
+    CHECK(q.normal_z == Approx(-1.0).epsilon(kTight));
+  }
+  CHECK(g.contains(0.03, 0.001, 0.0));
+  CHECK_FALSE(g.contains(0.051, 0.001, 0.0));
+  CHECK(punch.volume_m3() == Approx(std::numbers::pi * 0.05 * 0.05 * 0.1).epsilon(1e-6));
+}
