@@ -124,8 +124,11 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
                                                           : std::nullopt,
                                      s.disconnected_density_ratio * s.density_kg_m3});
   const double h = d.mesh.min_cell_m;
-  m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, h / s.near_ppc_r,
-                                        h / s.near_ppc_z});
+  if (s.near_spacing_m && !(*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h))
+    throw std::invalid_argument("the near zone's particle spacing must be in (0, min_cell_m]");
+  const double spacing_r = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_r;
+  const double spacing_z = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_z;
+  m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, spacing_r, spacing_z});
   if (d.deformable) {
     const DeformableFfp& f = *d.deformable;
     // The density is fixed below so that the particles carry exactly the given mass.

@@ -33,6 +33,9 @@ struct FfpSoil {
   /// Near zone (r ≤ near_radius, depth ≤ near_depth): this many particles per
   /// min_cell × min_cell, at the same spacing in larger cells (paper: 10 per cell below the FFP).
   int near_ppc_r = 3, near_ppc_z = 3;
+  /// Instead of near_ppc: the near zone's particle spacing as a length, fixed
+  /// whatever the mesh (the paper's density, about 4–5 points per cm under the FFP).
+  std::optional<double> near_spacing_m;
   /// Elsewhere: particles per grid cell (paper: 4).
   int far_ppc_r = 2, far_ppc_z = 2;
   double near_radius_m = 0.15, near_depth_m = 0.4;

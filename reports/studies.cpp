@@ -18,6 +18,7 @@ std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   studies.push_back(ffp_peak_friction_study(scenes_dir));
   studies.push_back(ffp_rate_factor_study(scenes_dir));
   studies.push_back(ffp_convergence_study(scenes_dir));
+  studies.push_back(ffp_softening_convergence_study(scenes_dir));
   return studies;
 }
 

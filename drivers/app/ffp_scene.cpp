@@ -35,14 +35,21 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.depth_m = soil.number("depth_m", Range::positive(kMaxLength_m, "m"), 0.4);
   d.soil.radius_m = soil.number("radius_m", Range::positive(kMaxLength_m, "m"), 0.4);
   d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), spec.at_rest_k0());
-  std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
+  if (soil.has("near_spacing_m")) {
+    // A spacing in metres, the same at every mesh size; checked against mesh.min_cell_m in read_mesh.
+    if (soil.has("particles_per_cell_near"))
+      soil.fail("near_spacing_m", "give either near_spacing_m (a length) or particles_per_cell_near (per min cell), not both");
+    d.soil.near_spacing_m = soil.number("near_spacing_m", Range::positive(1.0, "m"));
+  } else {
+    std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
+  }
   std::tie(d.soil.far_ppc_r, d.soil.far_ppc_z) = particles_per_cell(soil, "particles_per_cell_far", 2);
   d.soil.near_radius_m = soil.number("near_radius_m", Range::closed(0.0, d.soil.radius_m, "m (≤ radius_m)"),
                                      std::min(0.15, d.soil.radius_m));
   d.soil.near_depth_m =
       soil.number("near_depth_m", Range::closed(0.0, d.soil.depth_m, "m (≤ depth_m)"), d.soil.depth_m);
   d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
-  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near, particles_per_cell_far, near_radius_m, "
+  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, near_radius_m, "
               "near_depth_m, disconnected_density_ratio)");
   return cohesion_Pa;
 }
@@ -135,6 +142,8 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   mesh.air_above_m = m.number("air_above_m", Range::positive(kMaxLength_m, "m"), 0.1);
   mesh.growth = m.number("growth", Range{1.0, 2.0, true, false, ""}, 1.2);
   mesh.tip_offset_cells = m.number("tip_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0);
+  if (d.soil.near_spacing_m && *d.soil.near_spacing_m > h)
+    scene.fail("soil.near_spacing_m", "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
   if (d.shape.base_radius_m + h > d.soil.radius_m)
     m.fail("min_cell_m", "leaves no cell between the penetrometer and the chamber wall");
   if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)

@@ -394,6 +394,10 @@ void apply_override(json& scene, const std::string& assignment) {
                          std::to_string(node->size()));
       node = &(*node)[index];
     } else if (node->is_object()) {
+      if (dot == std::string::npos && value.is_null()) {  // --set key=null: the key is dropped, its default applies
+        node->erase(part);
+        return;
+      }
       if (dot != std::string::npos && !node->contains(part)) (*node)[part] = json::object();
       node = &(*node)[part];
     } else {

@@ -99,7 +99,8 @@ std::string nearest(std::string_view word, const std::vector<std::string>& candi
 json parse_scene_text(const std::string& text, const std::string& source_name);
 /// Read and parse a scene file (missing/empty/unreadable files are SceneErrors).
 json load_scene_file(const std::string& file_path);
-/// Apply one `--set key.path=value` override (value parsed as JSON, else a string).
+/// Apply one `--set key.path=value` override (value parsed as JSON, else a string;
+/// `null` removes the key, so that its default applies).
 void apply_override(json& scene, const std::string& assignment);
 
 }  // namespace ffp

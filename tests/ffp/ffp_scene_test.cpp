@@ -138,3 +138,30 @@ TEST_CASE("phi_peak_deg = 0 (Tresca) is allowed for mohr_coulomb with a cohesion
   c["material"]["phi_peak_deg"] = 0;
   refused(c, "material.phi_peak_deg", "for ssmc");
 }
+
+TEST_CASE("soil.near_spacing_m is a length that replaces particles_per_cell_near and is at most a min cell",
+          "[ffp][scene]") {
+  json s = reference();
+  s["soil"]["near_spacing_m"] = 0.0022;
+  refused(s, "soil.near_spacing_m", "not both");
+  s["soil"].erase("particles_per_cell_near");
+  s["soil"]["near_spacing_m"] = 0.02;  // the reference's min cell is 1 cm
+  refused(s, "soil.near_spacing_m", "at most mesh.min_cell_m");
+  // A third of the 1 cm cell is the reference's own 3 × 3 per cell: the same particles.
+  s["soil"]["near_spacing_m"] = 0.01 / 3.0;
+  const ProgramResult by_length = check(s);
+  const ProgramResult by_count = check(reference());
+  REQUIRE(by_length.exit_code == 0);
+  auto particles = [](const std::string& out) { return out.substr(out.find("particles:"), out.find('\n', out.find("particles:")) - out.find("particles:")); };
+  CHECK(particles(by_length.out) == particles(by_count.out));
+}
+
+TEST_CASE("an override to null removes the key so that its default applies", "[ffp][scene]") {
+  ScratchDir scratch;
+  const ProgramResult r = run_program({"check", scene_path("ffp_reference.json"), "--set", "soil.particles_per_cell_near=null",
+                                       "--set", "soil.near_spacing_m=0.0022"},
+                                      scratch.path());
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("\"near_spacing_m\": 0.0022") != std::string::npos);
+}
