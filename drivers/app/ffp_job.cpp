@@ -324,6 +324,10 @@ void PenetrometerJob::run(RunContext& context) {
   sum["rebound_m"] = max_penetration - ffp.penetration_m();
   sum["final_reaction_N"] = final_reaction;
   sum["final_reaction_window_s"] = s.time_s - t_row[from];
+  // The part of that mean that decelerates the body, M Δv/Δt over the window: at rest it is 0
+  // and the mean reaction is the weight; a body still bouncing at the end carries it too.
+  if (!cpt() && s.time_s > t_row[from])
+    sum["final_reaction_inertia_N"] = M * (velocity_row[from] - v_end) / (s.time_s - t_row[from]);
   sum["penetrometer_weight_N"] = weight;
   sum["particles"] = s.particles.size();
   sum["soil_particles"] = ffp.soil_particles();
