@@ -1,6 +1,7 @@
-/// Mesh convergence of the reference FFP run: peak deceleration and final
-/// penetration against wall time, with the error against a Richardson
-/// extrapolation of the three finest meshes (or the finest, if that fails).
+/// Mesh convergence of the reference FFP run: 2 ms peak deceleration, final
+/// penetration and the 0–40 ms impulse against wall time, with the error against
+/// a Richardson extrapolation of the three finest meshes (or the finest, if that
+/// fails); the run's health per level; pure FLIP and the tip off a node row as controls.
 #include <cmath>
 
 #include "reports/studies/ffp_figures.hpp"
@@ -12,6 +13,22 @@ namespace ffp {
 namespace {
 
 const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
+// The controls (pure FLIP; the tip half a cell off a node row) on the three coarser levels.
+constexpr std::size_t kControlLevels = 3;
+
+/// The impulse of the soil on the FFP over 0–t (history.csv, linear between rows).
+double impulse_until(const CsvData& h, double t) {
+  if (!h.has("impulse_N_s")) return std::nan("");
+  const auto& time = h.column("time_s");
+  const auto& impulse = h.column("impulse_N_s");
+  for (std::size_t k = 1; k < time.size(); ++k)
+    if (time[k] >= t) return impulse[k - 1] + (impulse[k] - impulse[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
+  return std::nan("");
+}
+
+double last(const CsvData& h, const std::string& column) {
+  return h.has(column) && !h.column(column).empty() ? h.column(column).back() : std::nan("");
+}
 
 }  // namespace
 
@@ -24,29 +41,43 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     // Particles grow as h⁻² and steps as h⁻¹; 1 cm takes about 5 s on one core.
     study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
   }
+  for (std::size_t l = 0; l < kControlLevels; ++l) {
+    const double h = kMinCells_m[l];
+    const std::string mesh = "mesh.min_cell_m=" + fixed(h, 4);
+    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "pure FLIP, " + fixed(100 * h, 2) + " cm",
+                                   {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}));
+    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "tip half a cell off, " + fixed(100 * h, 2) + " cm",
+                                   {mesh, "mesh.tip_offset_cells=0.5", "output.field_times_s=[]"}));
+  }
   study.write = [](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
     md.paragraph(
         "The reference scene with every mesh size following the minimum cell (2, 1, 0.5 and 0.25 cm). The "
         "reference value of each quantity is the Richardson extrapolation of the three finest meshes when they "
-        "converge monotonically with an order between 0.3 and 4, otherwise the finest mesh's value.");
-    const std::size_t n = results.size();
-    std::vector<double> peak(n), depth(n), wall(n);
+        "converge monotonically with an order between 0.3 and 4, otherwise the finest mesh's value. The "
+        "quantities are taken over fixed physical windows: the peak of the 2 ms running mean of the "
+        "deceleration, the final penetration at 0.15 s and the soil's impulse on the FFP over 0–40 ms.");
+    const std::size_t n = kMinCells_m.size();
+    std::vector<double> peak(n), depth(n), wall(n), impulse(n);
     for (std::size_t i = 0; i < n; ++i) {
-      peak[i] = figure(results, i, "peak_deceleration_g");
+      peak[i] = figure(results, i, "peak_deceleration_2ms_g");
       depth[i] = figure(results, i, "final_penetration_m");
       wall[i] = figure(results, i, "wall_time_s");
+      impulse[i] = impulse_until(results.history(i), 0.04);
     }
     const Extrapolation peak_ref = richardson(peak[n - 3], peak[n - 2], peak[n - 1]);
     const Extrapolation depth_ref = richardson(depth[n - 3], depth[n - 2], depth[n - 1]);
+    const Extrapolation impulse_ref = richardson(impulse[n - 3], impulse[n - 2], impulse[n - 1]);
     std::vector<std::vector<std::string>> rows;
     Series peak_error{{}, {}, "peak deceleration", "linespoints"}, depth_error{{}, {}, "final penetration", "linespoints"};
     for (std::size_t i = 0; i < n; ++i) {
       const double e_peak = std::abs(peak[i] - peak_ref.value) / std::abs(peak_ref.value);
       const double e_depth = std::abs(depth[i] - depth_ref.value) / std::abs(depth_ref.value);
+      const double e_impulse = std::abs(impulse[i] - impulse_ref.value) / std::abs(impulse_ref.value);
       rows.push_back({fixed(100 * kMinCells_m[i], 2), fixed(figure(results, i, "particles"), 0),
                       fixed(figure(results, i, "steps"), 0), fixed(wall[i], 1), fixed(peak[i], 2),
-                      fixed(100 * e_peak, 1), fixed(100 * depth[i], 2), fixed(100 * e_depth, 1)});
+                      fixed(100 * e_peak, 1), fixed(100 * depth[i], 2), fixed(100 * e_depth, 1), fixed(impulse[i], 2),
+                      fixed(100 * e_impulse, 1)});
       if (std::isfinite(wall[i]) && e_peak > 0) {
         peak_error.x.push_back(wall[i]);
         peak_error.y.push_back(e_peak);
@@ -56,8 +87,8 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         depth_error.y.push_back(e_depth);
       }
     }
-    md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "peak [g]", "error [%]", "final penetration [cm]",
-              "error [%]"},
+    md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "2 ms peak [g]", "error [%]",
+              "final penetration [cm]", "error [%]", "impulse 0–40 ms [N s]", "error [%]"},
              rows);
     // What each level's run did to the soil: the contact's intrusion (it should
     // shrink with h), the largest V/V0, the smallest step, and the soil's kinetic
@@ -73,18 +104,35 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
                         fixed(figure(results, i, "max_soil_intrusion_cells"), 2),
                         fixed(figure(results, i, "max_volume_ratio"), 2),
                         fixed(figure(results, i, "inflated_particles_max"), 0), scientific(dt_min),
+                        scientific(last(results.history(i), "soil_kinetic_energy_J")),
                         collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
     }
     md.table({"min cell [cm]", "max intrusion [mm]", "[cells]", "max V/V0", "particles at V/V0 ≥ 2", "Δt_min [s]",
-              "level"},
+              "soil kinetic energy at 0.15 s [J]", "level"},
              health);
+    // The controls: pure FLIP (no PIC share: a level whose soil then gains energy with no work
+    // done on it has an unstable step) and the staircase bias of the tip between node rows.
+    std::vector<std::vector<std::string>> controls;
+    for (std::size_t l = 0; l < kControlLevels; ++l) {
+      const std::size_t flip = n + 2 * l, offset = n + 2 * l + 1;
+      const double ke = last(results.history(l), "soil_kinetic_energy_J");
+      const double ke_flip = last(results.history(flip), "soil_kinetic_energy_J");
+      const double z_offset = figure(results, offset, "final_penetration_m");
+      controls.push_back({fixed(100 * kMinCells_m[l], 2), fixed(100 * depth[l], 2),
+                          fixed(100 * figure(results, flip, "final_penetration_m"), 2), scientific(ke), scientific(ke_flip),
+                          fixed(100 * z_offset, 2), fixed(100 * (z_offset - depth[l]) / depth[l], 1)});
+    }
+    md.table({"min cell [cm]", "final penetration [cm]", "pure FLIP [cm]", "soil KE at 0.15 s [J]", "pure FLIP [J]",
+              "tip half a cell off [cm]", "staircase bias [%]"},
+             controls);
     auto describe = [](const char* what, const Extrapolation& e, double scale, const char* unit) {
       return std::string(what) + ": reference " + fixed(scale * e.value, 2) + " " + unit +
              (std::isfinite(e.order) ? " (Richardson, observed order " + fixed(e.order, 2) + ")"
                                      : " (finest mesh: the sequence is not in the asymptotic range)");
     };
-    md.paragraph(describe("Peak deceleration", peak_ref, 1.0, "g") + "; " +
-                 describe("final penetration", depth_ref, 100.0, "cm") + ".");
+    md.paragraph(describe("2 ms peak deceleration", peak_ref, 1.0, "g") + "; " +
+                 describe("final penetration", depth_ref, 100.0, "cm") + "; " +
+                 describe("impulse over 0–40 ms", impulse_ref, 1.0, "N s") + ".");
     Plot p{"Error against wall time (2 cores)", "wall time of the run (s)", "relative error", {peak_error, depth_error},
            true, true, false, "top right"};
     if (write_png(p, out.figures_dir / "convergence_error_vs_wall_time.png"))
