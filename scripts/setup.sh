@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
   catch2 libbenchmark-dev gnuplot-nox
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
+  slurm-wlm munge parallel     # sweeps on a scheduler: the one-node Slurm of the tests, GNU parallel
 )
 
 missing=()

@@ -11,6 +11,7 @@ using Arguments = std::vector<std::string>;
 int command_run(const Arguments& args);
 int command_check(const Arguments& args);
 int command_sweep(const Arguments& args);
+int command_collect(const Arguments& args);
 int command_report(const Arguments& args);
 int command_bench(const Arguments& args);
 

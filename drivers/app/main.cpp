@@ -23,6 +23,12 @@ Commands:
         Validate a scene and print it with defaults filled in.
   sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR] [--force]
         Run every combination as an independent process; DIR/sweep.csv.
+        --emit DIR: write the cases for a scheduler instead (DIR/cases.tsv, one scene
+        per case, slurm.sbatch, parallel.sh); --scheduler slurm: submit that job
+        array with sbatch, wait, collect; --threads N: OpenMP threads per case.
+  collect DIR
+        Build DIR/sweep.csv from an emitted sweep's finished cases; list the missing
+        and failed ones (exit 1 while any is).
   report [--out DIR] [--cache DIR] [--jobs N] [--only TEXT] [--force]
         Run the validation study (cached) and write DIR/report.md with figures;
         N runs side by side (default: one per core).
@@ -67,6 +73,7 @@ int main(int argc, char** argv) {
   if (command == "run") return ffp::command_run(args);
   if (command == "check") return ffp::command_check(args);
   if (command == "sweep") return ffp::command_sweep(args);
+  if (command == "collect") return ffp::command_collect(args);
   if (command == "report") return ffp::command_report(args);
   if (command == "bench") return ffp::command_bench(args);
   std::fprintf(stderr, "ffp: unknown command '%s' (try ffp --help)\n", command.c_str());

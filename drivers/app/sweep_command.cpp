@@ -1,5 +1,10 @@
-/// `ffp sweep`: every combination of --set key=v1,v2,... as an independent run.
+/// `ffp sweep`: every combination of --set key=v1,v2,... as an independent run, on
+/// this machine's process pool, or emitted for a scheduler (--emit; --scheduler
+/// slurm submits and waits); `ffp collect` turns an emitted folder into sweep.csv.
 #include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +12,7 @@
 #include <thread>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/sweep_cases.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
@@ -40,14 +46,67 @@ std::vector<std::string> split_values(const std::string& list) {
   return values;
 }
 
-std::string csv_cell(const json& v) {
-  if (v.is_number_float()) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v.get<double>());
-    return buffer;
+/// Runs `command`, returns its stdout (and its exit status in `status`).
+std::string capture(const std::string& command, int& status) {
+  std::string out;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    status = -1;
+    return out;
   }
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
+  char buffer[256];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+  status = ::pclose(pipe);
+  return out;
+}
+
+/// Writes sweep.csv from the collected cases, lists the missing and failed ones; exit 0 only when all finished.
+int report_collected(const fs::path& dir, const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
+  write_file_atomically(dir / "sweep.csv", sweep_table(keys, cases));
+  std::size_t missing = 0, failed = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::string what;
+    for (const auto& o : cases[i].overrides) what += (what.empty() ? "" : " ") + o;
+    if (cases[i].exit_code < 0) {
+      ++missing;
+      std::fprintf(stderr, "  case %04zu (%s): missing\n", i, what.c_str());
+    } else if (cases[i].exit_code != 0) {
+      ++failed;
+      std::fprintf(stderr, "  case %04zu (%s): failed (exit %d): %s\n", i, what.c_str(), cases[i].exit_code,
+                   cases[i].error.c_str());
+    }
+  }
+  std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing\n", (dir / "sweep.csv").string().c_str(),
+               cases.size(), cases.size() - missing - failed, failed, missing);
+  return missing == 0 && failed == 0 ? 0 : 1;
+}
+
+/// Submits DIR/slurm.sbatch, waits until the array has left the queue, then collects.
+int run_on_slurm(const fs::path& dir, std::size_t cases) {
+  int status = 0;
+  const std::string submitted = capture("sbatch --parsable " + (dir / "slurm.sbatch").string() + " 2>&1", status);
+  if (status != 0)
+    throw std::runtime_error("--scheduler slurm: sbatch failed (is this a Slurm login node?): " + submitted);
+  const std::string job = submitted.substr(0, submitted.find_first_of(";\n"));
+  std::fprintf(stderr, "sweep: Slurm job %s, %zu array tasks; waiting (ffp collect %s gives the table at any time)\n",
+               job.c_str(), cases, dir.string().c_str());
+  std::size_t last_finished = static_cast<std::size_t>(-1);
+  while (true) {
+    const std::string queued = capture("squeue -h -j " + job + " -o %i 2>/dev/null", status);
+    std::vector<std::string> keys;
+    std::size_t finished = 0;
+    for (const CaseResult& c : collect_sweep(dir, keys)) finished += c.exit_code >= 0;
+    if (finished != last_finished) {
+      std::fprintf(stderr, "sweep: %zu of %zu cases done\n", finished, cases);
+      last_finished = finished;
+    }
+    if (status == 0 && queued.find_first_not_of(" \n") == std::string::npos) break;
+    throw_if_interrupted();
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+  }
+  std::vector<std::string> keys;
+  const std::vector<CaseResult> results = collect_sweep(dir, keys);
+  return report_collected(dir, keys, results);
 }
 
 }  // namespace
@@ -55,29 +114,43 @@ std::string csv_cell(const json& v) {
 int command_sweep(const Arguments& args) {
   try {
     std::string scene_file;
-    std::vector<std::pair<std::string, std::vector<std::string>>> axes;
-    fs::path out;
-    int jobs = 1;
-    bool force = false;
+    std::vector<SweepAxis> axes;
+    fs::path out, emit;
+    int jobs = 1, threads = 1;
+    bool force = false, slurm = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> std::string {
         if (i + 1 >= args.size()) throw SceneError(a + ": needs a value");
         return args[++i];
       };
+      auto count = [&](int high) {
+        const std::string n = value();
+        char* end = nullptr;
+        const long v = std::strtol(n.c_str(), &end, 10);
+        if (end == n.c_str() || *end != '\0' || v < 1 || v > high)
+          throw SceneError(a + ": '" + n + "' must be an integer in [1, " + std::to_string(high) + "]");
+        return static_cast<int>(v);
+      };
       if (a == "--set") {
         const std::string assignment = value();
         const auto eq = assignment.find('=');
         if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key=v1,v2,...");
-        axes.emplace_back(assignment.substr(0, eq), split_values(assignment.substr(eq + 1)));
+        axes.push_back({assignment.substr(0, eq), split_values(assignment.substr(eq + 1))});
       } else if (a == "--jobs") {
-        const std::string n = value();
-        jobs = std::atoi(n.c_str());
-        if (jobs < 1 || jobs > 256) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 256]");
+        jobs = count(256);
+      } else if (a == "--threads") {
+        threads = count(256);
       } else if (a == "--force") {
         force = true;
       } else if (a == "--out") {
         out = value();
+      } else if (a == "--emit") {
+        emit = value();
+      } else if (a == "--scheduler") {
+        const std::string v = value();
+        if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
+        slurm = v == "slurm";
       } else if (!a.empty() && a[0] == '-') {
         throw SceneError("ffp sweep: unknown option '" + a + "' (try ffp --help)");
       } else if (scene_file.empty()) {
@@ -88,73 +161,49 @@ int command_sweep(const Arguments& args) {
     }
     if (scene_file.empty()) throw SceneError("ffp sweep: missing SCENE.json");
     if (axes.empty()) throw SceneError("ffp sweep: give at least one --set key=v1,v2,...");
+    if (!emit.empty() && (slurm || !out.empty()))
+      throw SceneError("--emit: writes the case folder only; give --out with --scheduler slurm to also submit it");
 
-    // Every combination, validated up front so a typo fails before any run starts.
-    std::vector<std::vector<std::string>> combinations = {{}};
-    for (const auto& [key, values] : axes) {
-      std::vector<std::vector<std::string>> grown;
-      for (const auto& c : combinations)
-        for (const auto& v : values) {
-          auto next = c;
-          next.push_back(key + "=" + v);
-          grown.push_back(next);
-        }
-      combinations = std::move(grown);
-    }
-    const json base = load_scene_file(scene_file);
     std::string name;
-    std::vector<RunRequest> requests;
-    for (const auto& c : combinations) {
-      json scene = base;
-      for (const auto& o : c) apply_override(scene, o);
-      json echo;
-      make_job(scene, fs::path(scene_file).parent_path(), echo);
-      name = echo.value("name", "sweep");
-      std::string label = name;
-      for (const auto& o : c) label += "_" + o.substr(o.find('=') + 1);
-      requests.push_back({label, scene_file, c});
+    const std::vector<SweepCase> cases = expand_sweep(scene_file, axes, name);
+    std::vector<std::string> keys;
+    for (const SweepAxis& axis : axes) keys.push_back(axis.key);
+
+    if (!emit.empty() || slurm) {
+      const fs::path dir = !emit.empty() ? emit : (out.empty() ? fs::path("results") / (name + "-sweep") : out);
+      claim_persistent_folder(dir, !emit.empty() ? "--emit" : "--out", "sweep", force);
+      fs::remove(dir / "sweep.csv");
+      EmitOptions options;
+      options.ffp_binary = fs::read_symlink("/proc/self/exe");
+      options.threads_per_case = threads;
+      options.parallel_jobs = std::max(jobs, 1);
+      options.job_name = "ffp-" + name;
+      emit_sweep(dir, cases, options);
+      std::fprintf(stderr, "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
+                   cases.size(), dir.string().c_str(), dir.string().c_str());
+      return slurm ? run_on_slurm(dir, cases.size()) : 0;
     }
+
     if (out.empty()) out = fs::path("results") / (name + "-sweep");
     claim_persistent_folder(out, "--out", "sweep", force);
     claim_persistent_folder(out / "runs", "--out", "run cache", force);
     // A table from an earlier sweep into this folder must not pass for this one's.
     fs::remove(out / "sweep.csv");
+    std::vector<RunRequest> requests;
+    for (const SweepCase& c : cases) requests.push_back({c.label, scene_file, c.overrides});
     std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), jobs, out.string().c_str());
     const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", FFP_VERSION, jobs);
-
-    // One row per run: the swept values, the exit code, then every scalar figure.
-    std::vector<std::string> figure_columns;
-    std::vector<json> summaries;
-    for (const auto& o : outcomes) {
-      json s = json::object();
-      if (o.exit_code == 0) {
-        std::ifstream in(o.out_dir / "summary.json");
-        s = json::parse(in);
-        for (const auto& [k, v] : s.items())
-          if ((v.is_number() || v.is_string()) && k != "ffp_version" &&
-              std::find(figure_columns.begin(), figure_columns.end(), k) == figure_columns.end())
-            figure_columns.push_back(k);
-      }
-      summaries.push_back(s);
-    }
-    std::ostringstream table;
-    for (const auto& [key, _] : axes) table << key << ",";
-    table << "exit_code,out_dir";
-    for (const auto& c : figure_columns) table << "," << c;
-    table << "\n";
+    std::vector<CaseResult> results;
     int failures = 0;
     for (std::size_t i = 0; i < outcomes.size(); ++i) {
-      for (const auto& o : combinations[i]) table << o.substr(o.find('=') + 1) << ",";
-      table << outcomes[i].exit_code << "," << outcomes[i].out_dir.string();
-      for (const auto& c : figure_columns) table << "," << (summaries[i].contains(c) ? csv_cell(summaries[i][c]) : "");
-      table << "\n";
+      results.push_back({cases[i].overrides, outcomes[i].out_dir, outcomes[i].exit_code, outcomes[i].error});
       if (outcomes[i].exit_code != 0) {
         ++failures;
         std::fprintf(stderr, "  %s failed (exit %d): %s\n", requests[i].label.c_str(), outcomes[i].exit_code,
                      outcomes[i].error.c_str());
       }
     }
-    write_file_atomically(out / "sweep.csv", table.str());
+    write_file_atomically(out / "sweep.csv", sweep_table(keys, results));
     std::fprintf(stderr, "wrote %s\n", (out / "sweep.csv").string().c_str());
     return failures == 0 ? 0 : 1;
   } catch (const SceneError& e) {
@@ -163,6 +212,23 @@ int command_sweep(const Arguments& args) {
   } catch (const Interrupted&) {
     std::fputs("interrupted\n", stderr);
     return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}
+
+int command_collect(const Arguments& args) {
+  try {
+    if (args.size() != 1 || args[0].empty() || args[0][0] == '-')
+      throw SceneError("ffp collect: give one folder written by ffp sweep --emit (or --scheduler slurm)");
+    const fs::path dir = args[0];
+    std::vector<std::string> keys;
+    const std::vector<CaseResult> cases = collect_sweep(dir, keys);
+    return report_collected(dir, keys, cases);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

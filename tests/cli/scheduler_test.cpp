@@ -1,0 +1,157 @@
+/// Sweeps handed to a scheduler: `ffp sweep --emit` writes the cases and the
+/// launch files, GNU parallel or a real Slurm runs them, and `ffp collect`
+/// gives the same sweep.csv as the local pool. Six 2 cm FFP runs (a second
+/// each). The Slurm test starts a one-node cluster (scripts/slurm_local.sh,
+/// root and Debian's slurm-wlm) and is skipped, with the reason, where it cannot.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_harness.hpp"
+
+using namespace ffp::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<std::string> kSweep = {"--set", "mesh.min_cell_m=0.02", "--set", "material.E_kPa=1000,2500,5000",
+                                         "--set", "contact.delta_deg=15,25"};
+
+std::string reference_scene() { return std::string(FFP_SOURCE_DIR) + "/data/scenes/ffp_reference.json"; }
+
+std::vector<std::string> sweep_args(std::vector<std::string> extra) {
+  std::vector<std::string> args = {"sweep", reference_scene()};
+  args.insert(args.end(), kSweep.begin(), kSweep.end());
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+using Table = std::vector<std::map<std::string, std::string>>;
+
+Table read_table(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::vector<std::string> header;
+  Table rows;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> cells;
+    std::stringstream s(l);
+    for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
+    if (!l.empty() && l.back() == ',') cells.emplace_back();
+    return cells;
+  };
+  if (std::getline(in, line)) header = split(line);
+  while (std::getline(in, line)) {
+    const auto cells = split(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k) row[header[k]] = cells[k];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// Equal but for where the runs were written and how long they took.
+void same_results(const Table& local, const Table& scheduled) {
+  REQUIRE(local.size() == scheduled.size());
+  REQUIRE_FALSE(local.empty());
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    INFO("row " << i);
+    CHECK(local[i].size() == scheduled[i].size());
+    for (const auto& [key, value] : local[i]) {
+      if (key == "out_dir" || key == "wall_time_s") continue;
+      INFO("column " << key);
+      CHECK(scheduled[i].count(key) == 1);
+      if (scheduled[i].count(key)) CHECK(scheduled[i].at(key) == value);
+    }
+  }
+}
+
+int shell(const std::string& command) { return std::system(command.c_str()); }
+
+}  // namespace
+
+TEST_CASE("sweep --emit writes six cases and collect lists them all missing before any ran", "[cli][scheduler]") {
+  Scratch scratch;
+  const fs::path dir = scratch.path() / "cases";
+  const CommandResult emitted = run_ffp(sweep_args({"--emit", dir.string()}), scratch.path());
+  INFO(emitted.err);
+  REQUIRE(emitted.exit_code == 0);
+  for (const char* file : {"cases.tsv", "run_case.sh", "slurm.sbatch", "parallel.sh", "scenes/case_0005.json"})
+    CHECK(fs::exists(dir / file));
+  std::ifstream sbatch(dir / "slurm.sbatch");
+  const std::string text((std::istreambuf_iterator<char>(sbatch)), std::istreambuf_iterator<char>());
+  CHECK(text.find("#SBATCH --array=0-5") != std::string::npos);
+  const CommandResult collected = run_ffp({"collect", dir.string()}, scratch.path());
+  CHECK(collected.exit_code == 1);
+  CHECK(collected.err.find("6 missing") != std::string::npos);
+  CHECK(run_ffp({"collect", scratch.path().string()}, scratch.path()).exit_code == 2);  // not a case folder
+}
+
+TEST_CASE("a case that fails is listed with its error and a rerun of run_case.sh skips a finished one",
+          "[cli][scheduler]") {
+  Scratch scratch;
+  const fs::path dir = scratch.path() / "cases";
+  // 200 m/s goes through the 0.4 m chamber: that run ends with exit 1 and says why.
+  const CommandResult emitted =
+      run_ffp({"sweep", reference_scene(), "--set", "mesh.min_cell_m=0.02", "--set", "ffp.impact_velocity_m_s=5.6,200",
+               "--emit", dir.string()},
+              scratch.path());
+  REQUIRE(emitted.exit_code == 0);
+  CHECK(shell("OMP_NUM_THREADS=1 bash " + (dir / "run_case.sh").string() + " 0 > /dev/null 2>&1") == 0);
+  CHECK(shell("OMP_NUM_THREADS=1 bash " + (dir / "run_case.sh").string() + " 1 > /dev/null 2>&1") != 0);
+  const CommandResult collected = run_ffp({"collect", dir.string()}, scratch.path());
+  INFO(collected.err);
+  CHECK(collected.exit_code == 1);
+  CHECK(collected.err.find("case 0001 (mesh.min_cell_m=0.02 ffp.impact_velocity_m_s=200): failed (exit 1)") !=
+        std::string::npos);
+  CHECK(collected.err.find("went through the chamber") != std::string::npos);
+  CHECK(collected.err.find("1 finished, 1 failed, 0 missing") != std::string::npos);
+  // A finished case is not run again.
+  const fs::path summary = dir / "runs" / "case_0000" / "summary.json";
+  const auto written = fs::last_write_time(summary);
+  CHECK(shell("bash " + (dir / "run_case.sh").string() + " 0 > /dev/null 2>&1") == 0);
+  CHECK(fs::last_write_time(summary) == written);
+}
+
+TEST_CASE("GNU parallel runs the emitted cases and collect gives the local sweep's table", "[cli][scheduler]") {
+  if (shell("command -v parallel > /dev/null 2>&1") != 0) {
+    WARN("skipped: GNU parallel is not installed (bash scripts/setup.sh installs it)");
+    return;
+  }
+  Scratch scratch;
+  const fs::path dir = scratch.path() / "cases";
+  REQUIRE(run_ffp(sweep_args({"--emit", dir.string()}), scratch.path()).exit_code == 0);
+  CHECK(shell("bash " + (dir / "parallel.sh").string() + " 2 > /dev/null 2>&1") == 0);
+  CHECK(fs::exists(dir / "logs" / "parallel.joblog"));
+  const CommandResult collected = run_ffp({"collect", dir.string()}, scratch.path());
+  INFO(collected.err);
+  REQUIRE(collected.exit_code == 0);
+  const CommandResult local = run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
+  REQUIRE(local.exit_code == 0);
+  same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(dir / "sweep.csv"));
+}
+
+TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected table equals the local one",
+          "[cli][scheduler][slurm]") {
+  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
+  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
+    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+         "scripts/slurm_local.sh start says why it cannot start)");
+    return;
+  }
+  Scratch scratch;
+  const CommandResult slurm =
+      run_ffp(sweep_args({"--scheduler", "slurm", "--out", (scratch.path() / "slurm").string()}), scratch.path());
+  INFO(slurm.err);
+  REQUIRE(slurm.exit_code == 0);
+  CHECK(slurm.err.find("Slurm job") != std::string::npos);
+  CHECK(fs::exists(scratch.path() / "slurm" / "logs" / "case_0005.exit"));
+  const CommandResult local = run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
+  REQUIRE(local.exit_code == 0);
+  same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(scratch.path() / "slurm" / "sweep.csv"));
+}
