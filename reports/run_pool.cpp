@@ -21,6 +21,7 @@
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "drivers/scene/scene_reader.hpp"
+#include "reports/slurm_jobs.hpp"
 
 extern char** environ;
 
@@ -87,6 +88,61 @@ std::string hex_key(const std::string& material) {
   return hex;
 }
 
+/// The pending runs as one Slurm job array: each task runs one `ffp run` (the command
+/// line on its row of commands.txt) with the threads Slurm gives it, and leaves its
+/// exit code beside its log. Returns once the array has left the queue.
+void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
+                  const std::vector<std::size_t>& pending, std::vector<RunOutcome>& outcomes, const fs::path& cache_root) {
+  const fs::path batch = fs::absolute(cache_root / (".slurm-" + std::to_string(::getpid())));
+  fs::create_directories(batch);
+  std::ostringstream commands;
+  for (std::size_t t = 0; t < pending.size(); ++t) {
+    const RunRequest& r = requests[pending[t]];
+    commands << shell_quoted(fs::canonical(ffp_binary).string()) << " run " << shell_quoted(fs::absolute(r.scene_file).string())
+             << " --out " << shell_quoted(fs::absolute(outcomes[pending[t]].out_dir).string()) << " --quiet";
+    for (const auto& o : r.overrides) commands << " --set " << shell_quoted(o);
+    commands << "\n";
+  }
+  write_file_atomically(batch / "commands.txt", commands.str());
+  write_file_atomically(
+      batch / "batch.sbatch",
+      "#!/usr/bin/env bash\n#SBATCH --job-name=ffp-report\n#SBATCH --array=0-" + std::to_string(pending.size() - 1) +
+          "\n#SBATCH --output=" + (batch / "task-%a.out").string() +
+          "\nset -u\ncd " + shell_quoted(batch.string()) +
+          "\nexport OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n"
+          "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" commands.txt)\n"
+          "eval \"$line\" 2> \"task-$SLURM_ARRAY_TASK_ID.err\"\n"
+          "echo $? > \"task-$SLURM_ARRAY_TASK_ID.exit\"\n");
+  const auto start = std::chrono::steady_clock::now();
+  const std::string job = slurm_submit(batch / "batch.sbatch");
+  std::fprintf(stderr, "runs: Slurm job %s, %zu array tasks (%s)\n", job.c_str(), pending.size(), batch.c_str());
+  std::size_t reported = 0;
+  slurm_wait(job, [&] {
+    throw_if_interrupted();
+    std::size_t done = 0;
+    for (std::size_t t = 0; t < pending.size(); ++t) done += fs::exists(batch / ("task-" + std::to_string(t) + ".exit"));
+    if (done != reported) std::fprintf(stderr, "  %zu of %zu runs done\n", done, pending.size());
+    reported = done;
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t t = 0; t < pending.size(); ++t) {
+    RunOutcome& o = outcomes[pending[t]];
+    std::ifstream exit_file(batch / ("task-" + std::to_string(t) + ".exit"));
+    int code = -1;
+    if (!(exit_file >> code)) code = 125;  // the task never ran to its end (cancelled, node lost)
+    o.exit_code = code;
+    o.wall_time_s = wall;  // of the whole array: Slurm ran them side by side
+    if (code != 0) {
+      o.error = last_line(batch / ("task-" + std::to_string(t) + ".err"));
+      if (o.error.empty()) o.error = "the Slurm task did not finish (see " + batch.string() + ")";
+    }
+  }
+  std::error_code ignored;
+  bool all_ok = true;
+  for (std::size_t t : pending) all_ok = all_ok && outcomes[t].exit_code == 0;
+  if (all_ok) fs::remove_all(batch, ignored);  // kept when something failed: its logs say why
+}
+
 }  // namespace
 
 std::string run_key(const RunRequest& request, const std::string& program_version) {
@@ -109,7 +165,8 @@ std::string program_identity(const fs::path& binary, const std::string& program_
 }
 
 std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
-                                const fs::path& cache_root, const std::string& program_version, int jobs) {
+                                const fs::path& cache_root, const std::string& program_version, int jobs,
+                                Scheduler scheduler) {
   fs::create_directories(cache_root);
   const std::string identity = program_identity(ffp_binary, program_version);
   std::vector<RunOutcome> outcomes(requests.size());
@@ -141,6 +198,14 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   });
   const std::size_t cached = requests.size() - duplicates.size() - pending.size();
   std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
+  if (scheduler == Scheduler::slurm && !pending.empty()) {
+    run_on_slurm(ffp_binary, requests, pending, outcomes, cache_root);
+    for (const auto& [copy, original] : duplicates) {
+      outcomes[copy] = outcomes[original];
+      outcomes[copy].cached = true;
+    }
+    return outcomes;
+  }
 
   struct Running {
     std::size_t index;

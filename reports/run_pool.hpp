@@ -33,12 +33,16 @@ std::string run_key(const RunRequest& request, const std::string& program_identi
 /// The version string and a hash of the program's binary: a rebuild changes it.
 std::string program_identity(const std::filesystem::path& binary, const std::string& program_version);
 
+/// Where the runs that are not cached run: this machine's process pool, or a
+/// Slurm job array (one task per run, sbatch from this machine, then waited for).
+enum class Scheduler { local, slurm };
+
 /// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/
 /// (key: run_key with program_identity(ffp_binary, program_version)),
 /// skipping those whose summary.json already exists; the longest expected runs
 /// start first, the others in the given order. Progress lines go to stderr.
 std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const std::filesystem::path& cache_root, const std::string& program_version,
-                                int jobs);
+                                int jobs, Scheduler scheduler = Scheduler::local);
 
 }  // namespace ffp

@@ -29,9 +29,10 @@ Commands:
   collect DIR
         Build DIR/sweep.csv from an emitted sweep's finished cases; list the missing
         and failed ones (exit 1 while any is).
-  report [--out DIR] [--cache DIR] [--jobs N] [--only TEXT] [--force]
+  report [--out DIR] [--cache DIR] [--jobs N] [--only TEXT] [--force] [--scheduler local|slurm]
         Run the validation study (cached) and write DIR/report.md with figures;
-        N runs side by side (default: one per core).
+        N runs side by side (default: one per core), or the uncached runs as one
+        Slurm job array (--scheduler slurm).
   bench
         Measure the speed of the constitutive updates and the MPM step.
   --help, --version

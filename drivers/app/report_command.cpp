@@ -49,6 +49,7 @@ int command_report(const Arguments& args) {
     fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
     std::string only;
     bool force = false;
+    Scheduler scheduler = Scheduler::local;
     // One run per core: most runs are small or single-threaded (the MPM
     // calibration specimens), so runs side by side finish the study sooner than
     // one run at a time on two OpenMP threads (the report took 24 against 37 min
@@ -70,6 +71,10 @@ int command_report(const Arguments& args) {
         force = true;
       } else if (a == "--only") {
         only = value();
+      } else if (a == "--scheduler") {
+        const std::string v = value();
+        if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
+        scheduler = v == "slurm" ? Scheduler::slurm : Scheduler::local;
       } else if (a == "--jobs") {
         const std::string n = value();
         jobs = std::atoi(n.c_str());
@@ -94,7 +99,7 @@ int command_report(const Arguments& args) {
     std::vector<RunRequest> all;
     for (const auto& s : studies) all.insert(all.end(), s.runs.begin(), s.runs.end());
     std::fprintf(stderr, "report: %zu studies, %zu runs\n", studies.size(), all.size());
-    const std::vector<RunOutcome> first = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs);
+    const std::vector<RunOutcome> first = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs, scheduler);
     std::vector<StudyResults> results;
     std::vector<std::vector<RunRequest>> follow_ups(studies.size());
     std::vector<RunRequest> second_round;
@@ -107,7 +112,7 @@ int command_report(const Arguments& args) {
     }
     if (!second_round.empty()) {
       std::fprintf(stderr, "report: %zu runs that use the results above\n", second_round.size());
-      const std::vector<RunOutcome> second = run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs);
+      const std::vector<RunOutcome> second = run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs, scheduler);
       for (std::size_t k = 0, offset = 0; k < studies.size(); offset += follow_ups[k].size(), ++k) {
         if (follow_ups[k].empty()) continue;
         const auto begin = second.begin() + static_cast<long>(offset);

@@ -7,6 +7,7 @@
 
 #include "drivers/app/job.hpp"
 #include "drivers/output/run_directory.hpp"
+#include "reports/slurm_jobs.hpp"
 
 namespace ffp {
 
@@ -41,12 +42,6 @@ std::string csv_cell(const json& v) {
   }
   if (v.is_string()) return v.get<std::string>();
   return v.dump();
-}
-
-std::string shell_quoted(const std::string& word) {
-  std::string out = "'";
-  for (char c : word) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 std::string last_line(const fs::path& file) {

@@ -18,6 +18,7 @@
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "reports/run_pool.hpp"
+#include "reports/slurm_jobs.hpp"
 
 namespace ffp {
 
@@ -46,20 +47,6 @@ std::vector<std::string> split_values(const std::string& list) {
   return values;
 }
 
-/// Runs `command`, returns its stdout (and its exit status in `status`).
-std::string capture(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    status = -1;
-    return out;
-  }
-  char buffer[256];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
-  status = ::pclose(pipe);
-  return out;
-}
-
 /// Writes sweep.csv from the collected cases, lists the missing and failed ones; exit 0 only when all finished.
 int report_collected(const fs::path& dir, const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
   write_file_atomically(dir / "sweep.csv", sweep_table(keys, cases));
@@ -83,27 +70,18 @@ int report_collected(const fs::path& dir, const std::vector<std::string>& keys, 
 
 /// Submits DIR/slurm.sbatch, waits until the array has left the queue, then collects.
 int run_on_slurm(const fs::path& dir, std::size_t cases) {
-  int status = 0;
-  const std::string submitted = capture("sbatch --parsable " + (dir / "slurm.sbatch").string() + " 2>&1", status);
-  if (status != 0)
-    throw std::runtime_error("--scheduler slurm: sbatch failed (is this a Slurm login node?): " + submitted);
-  const std::string job = submitted.substr(0, submitted.find_first_of(";\n"));
+  const std::string job = slurm_submit(dir / "slurm.sbatch");
   std::fprintf(stderr, "sweep: Slurm job %s, %zu array tasks; waiting (ffp collect %s gives the table at any time)\n",
                job.c_str(), cases, dir.string().c_str());
   std::size_t last_finished = static_cast<std::size_t>(-1);
-  while (true) {
-    const std::string queued = capture("squeue -h -j " + job + " -o %i 2>/dev/null", status);
+  slurm_wait(job, [&] {
+    throw_if_interrupted();
     std::vector<std::string> keys;
     std::size_t finished = 0;
     for (const CaseResult& c : collect_sweep(dir, keys)) finished += c.exit_code >= 0;
-    if (finished != last_finished) {
-      std::fprintf(stderr, "sweep: %zu of %zu cases done\n", finished, cases);
-      last_finished = finished;
-    }
-    if (status == 0 && queued.find_first_not_of(" \n") == std::string::npos) break;
-    throw_if_interrupted();
-    std::this_thread::sleep_for(std::chrono::seconds(2));
-  }
+    if (finished != last_finished) std::fprintf(stderr, "sweep: %zu of %zu cases done\n", finished, cases);
+    last_finished = finished;
+  });
   std::vector<std::string> keys;
   const std::vector<CaseResult> results = collect_sweep(dir, keys);
   return report_collected(dir, keys, results);

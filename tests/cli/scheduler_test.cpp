@@ -155,3 +155,30 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
   REQUIRE(local.exit_code == 0);
   same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(scratch.path() / "slurm" / "sweep.csv"));
 }
+
+TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array and reads them back",
+          "[cli][scheduler][slurm]") {
+  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
+  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
+    WARN("skipped: no Slurm here (see the sweep test above)");
+    return;
+  }
+  Scratch scratch;
+  const std::string scenes = std::string(FFP_SOURCE_DIR) + "/data/scenes";
+  auto report = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"report", "--scenes", scenes, "--only", "Constitutive integration", "--out",
+                                     (scratch.path() / name / "report").string(), "--cache",
+                                     (scratch.path() / name / "cache").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_ffp(args, scratch.path());
+  };
+  const CommandResult slurm = report("slurm", {"--scheduler", "slurm"});
+  INFO(slurm.err);
+  REQUIRE(slurm.exit_code == 0);
+  CHECK(slurm.err.find("Slurm job") != std::string::npos);
+  // The run came back through the cache like a local one: listed as ok, not failed.
+  std::ifstream md(scratch.path() / "slurm" / "report" / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  CHECK(text.find("| integration_error | ok |") != std::string::npos);
+  CHECK(text.find("FAILED") == std::string::npos);
+}

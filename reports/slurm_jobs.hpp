@@ -1,0 +1,21 @@
+#pragma once
+/// Handing work to Slurm: submit a batch script with sbatch, and wait for the
+/// job (an array included) to leave the queue, polling squeue. Used by
+/// `ffp sweep --scheduler slurm` and `ffp report --scheduler slurm`.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace ffp {
+
+/// sbatch --parsable FILE; the job id. std::runtime_error with sbatch's words when it fails.
+std::string slurm_submit(const std::filesystem::path& sbatch_file);
+
+/// Returns once job `id` is no longer in squeue; calls `poll` every couple of seconds
+/// (progress lines, and a chance to throw on an interrupt).
+void slurm_wait(const std::string& id, const std::function<void()>& poll);
+
+/// A shell word: 'it''s' quoted for bash.
+std::string shell_quoted(const std::string& word);
+
+}  // namespace ffp
