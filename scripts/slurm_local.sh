@@ -11,6 +11,11 @@ case "${1:-status}" in
       { echo "slurm_local: slurm-wlm and munge are not installed (bash scripts/setup.sh --slurm)" >&2; exit 3; }
     [ "$(id -u)" = 0 ] || { echo "slurm_local: needs root to start munged, slurmctld and slurmd" >&2; exit 3; }
     if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed|allocated)'; then exit 0; fi
+    # Never overwrite a real cluster's configuration: only one this script wrote.
+    if [ -e "$conf" ] && ! grep -q '^ClusterName=ffp-local$' "$conf"; then
+      echo "slurm_local: $conf exists and is not ours (ClusterName=ffp-local): leaving it alone" >&2
+      exit 3
+    fi
     mkdir -p "$state"/spool/ctld "$state"/spool/d "$state"/log /run/munge /var/lib/munge /var/log/munge
     chown munge:munge /run/munge /var/lib/munge /var/log/munge 2>/dev/null || true
     [ -s /etc/munge/munge.key ] || mungekey --create --keyfile=/etc/munge/munge.key
