@@ -55,7 +55,13 @@ CONF
     pgrep -x slurmctld >/dev/null || slurmctld
     pgrep -x slurmd >/dev/null || slurmd
     for _ in $(seq 1 30); do
-      if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed|allocated)'; then exit 0; fi
+      if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed|allocated)'; then
+        # Up only if it runs a job: a node that registers but cannot start tasks would
+        # leave a test waiting on its queue.
+        if timeout 60 sbatch --wait --quiet --output=/dev/null --wrap true >/dev/null 2>&1; then exit 0; fi
+        echo "slurm_local: the node is up but a trivial job did not run within 60 s; see $state/log" >&2
+        exit 4
+      fi
       sleep 1
     done
     echo "slurm_local: the node did not come up; see $state/log" >&2
