@@ -2,14 +2,9 @@
 /// this machine's process pool, or emitted for a scheduler (--emit; --scheduler
 /// slurm submits and waits); `ffp collect` turns an emitted folder into sweep.csv.
 #include <algorithm>
-#include <chrono>
-#include <cstdlib>
-#include <stdexcept>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <thread>
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/sweep_cases.hpp"
