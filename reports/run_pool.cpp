@@ -65,14 +65,6 @@ std::string slug(const std::string& label) {
   return s.substr(0, 60);
 }
 
-std::string last_line(const fs::path& log) {
-  std::ifstream in(log);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
-}
-
 /// Integers as doubles, so that a scene's 2500 and an override's 2500.0 give the same key.
 void normalise_numbers(nlohmann::json& node) {
   if (node.is_number()) {
@@ -144,6 +136,14 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
 }
 
 }  // namespace
+
+std::string last_line(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
 
 std::string run_key(const RunRequest& request, const std::string& program_version) {
   // The scene as it will run: overrides applied, so that an override equal to the

@@ -25,6 +25,9 @@ struct RunOutcome {
   std::string error;                    ///< last stderr line when it failed
 };
 
+/// The last non-empty line of a run's log (its error message when it failed); "" if none.
+std::string last_line(const std::filesystem::path& log);
+
 /// Content key of a run: the scene JSON with the overrides applied (numbers
 /// normalised, the description left out), the content of every file the scene
 /// names (e.g. a lab CSV) and the program's identity.

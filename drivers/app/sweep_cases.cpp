@@ -7,6 +7,7 @@
 
 #include "drivers/app/job.hpp"
 #include "drivers/output/run_directory.hpp"
+#include "reports/run_pool.hpp"
 #include "reports/slurm_jobs.hpp"
 
 namespace ffp {
@@ -42,14 +43,6 @@ std::string csv_cell(const json& v) {
   }
   if (v.is_string()) return v.get<std::string>();
   return v.dump();
-}
-
-std::string last_line(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
 }
 
 void write_script(const fs::path& file, const std::string& text) {

@@ -18,9 +18,7 @@ Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
   // The calibrated model is fed the η its calibration finds, on the FFP's own 1 cm cells
   // (paper section 4.2), not a number copied into a scene.
   study.runs = {scene_run(scenes_dir, "ffp_reference.json", "rigid FFP"),
-                scene_run(scenes_dir, "ffp_reference.json", "φ'_p = 60°",
-                          {"material.model=ssmc", "material.phi_peak_deg=60.0", "material.phi_residual_deg=32.0",
-                           "material.psi_peak_deg=5.00", "material.eta=8"}),
+                scene_run(scenes_dir, "ffp_reference.json", "φ'_p = 60°", paper_softening_sand("8")),
                 scene_run(scenes_dir, "calibration_dr15_mpm_1cm.json", "calibration, MPM specimen 1 cm")};
   study.follow_up = [scenes_dir](const StudyResults& first) -> std::vector<RunRequest> {
     const auto calibration = first.summary(2);

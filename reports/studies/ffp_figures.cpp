@@ -30,6 +30,11 @@ void add_figure(const std::vector<Plot>& panels, const std::string& png_name, co
 
 }  // namespace
 
+std::vector<std::string> paper_softening_sand(const std::string& eta) {
+  return {"material.model=ssmc", "material.phi_peak_deg=60.0", "material.phi_residual_deg=32.0",
+          "material.psi_peak_deg=5.00", "material.eta=" + eta};
+}
+
 double figure(const StudyResults& results, std::size_t run, const std::string& key) {
   const auto s = results.summary(run);
   if (!s.contains(key) || !s[key].is_number()) return std::numeric_limits<double>::quiet_NaN();

@@ -29,6 +29,10 @@ void ffp_time_histories_figure(const StudyResults& results, const std::vector<La
 std::vector<std::string> ffp_table_header();
 std::vector<std::vector<std::string>> ffp_table_rows(const StudyResults& results, const std::vector<LabelledRun>& runs);
 
+/// The overrides that turn ffp_reference.json's MC sand into the paper's section 5.5
+/// SSMC (φ'_p = 60°, φ'_c = 32°, ψ_p = 5°) with softening factor η (as written).
+std::vector<std::string> paper_softening_sand(const std::string& eta);
+
 /// A summary number, NaN when the run failed or lacks it.
 double figure(const StudyResults& results, std::size_t run, const std::string& key);
 

@@ -44,9 +44,7 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
   study.title = "Quasi-static push, dynamic reaction and the rate factor K (paper section 6, Fig. 14)";
   // The paper's "calibrated model" of section 5.5 (φ'_p = 60°, η = 8: the one that matches the
   // experiment), as in the peak-friction study, so the run is shared.
-  study.runs = {scene_run(scenes_dir, "ffp_reference.json", "φ'_p = 60°",
-                          {"material.model=ssmc", "material.phi_peak_deg=60.0", "material.phi_residual_deg=32.0",
-                           "material.psi_peak_deg=5.00", "material.eta=8"}),
+  study.runs = {scene_run(scenes_dir, "ffp_reference.json", "φ'_p = 60°", paper_softening_sand("8")),
                 scene_run(scenes_dir, "cpt_reference.json", "CPT-like push, φ'_p = 39°"),
                 scene_run(scenes_dir, "cpt_slow.json", "CPT-like push at half speed")};
   study.write = [](const StudyResults& results, StudyOutput& out) {

@@ -20,9 +20,9 @@ const std::vector<std::pair<double, const char*>> kCalibrations = {{0.02, "calib
 constexpr double kPaperEta = 8.0;  // at the FFP's 1 cm cells
 
 std::vector<std::string> softening(double h, double eta) {
-  return {"material.model=ssmc",        "material.phi_peak_deg=60.0", "material.phi_residual_deg=32.0",
-          "material.psi_peak_deg=5.00", "material.eta=" + fixed(eta, 2), "mesh.min_cell_m=" + fixed(h, 4),
-          "output.field_times_s=[]"};
+  std::vector<std::string> overrides = paper_softening_sand(fixed(eta, 2));
+  overrides.insert(overrides.end(), {"mesh.min_cell_m=" + fixed(h, 4), "output.field_times_s=[]"});
+  return overrides;
 }
 
 std::string cm(double h) { return fixed(100 * h, 2) + " cm"; }
