@@ -28,7 +28,9 @@
 /// the interval since the previous row (impulse difference / time difference), so Σ reaction·Δt over
 /// the rows is the exact impulse; deceleration_g uses the same mean. fields/particles_NNNN.vtu + .pvd,
 /// plots/time_histories.png (Fig. 7 style), plots/depth_profiles.png (Fig. 8b,c style),
-/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style), and summary figures (see run()).
+/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style), and summary figures (see run()). An ffp (not a
+/// cpt) run also writes record.csv and plots/record_profiles.png: its deceleration interpreted as a
+/// measured drop is (record_output.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,6 +44,7 @@
 #include "drivers/app/ffp_scene.hpp"
 #include "drivers/app/kinds.hpp"
 #include "drivers/app/memory_check.hpp"
+#include "drivers/app/record_output.hpp"
 #include "drivers/app/thread_governor.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/progress.hpp"
@@ -90,6 +93,8 @@ class PenetrometerJob : public Job {
  private:
   bool cpt() const { return scene_.kind == PenetrometerKind::cpt; }
   void write_fields(const fs::path& fields, const fs::path& plots, int index, PvdIndex& pvd) const;
+  void write_record(const std::vector<double>& time_s, const std::vector<double>& deceleration_g,
+                    const fs::path& out_dir, const fs::path& plots) const;
 
   FfpScene scene_;
   std::string name_;
@@ -163,6 +168,23 @@ void PenetrometerJob::write_fields(const fs::path& fields, const fs::path& plots
   map.point_size = 0.3;
   std::snprintf(file, sizeof file, "deviatoric_strain_t%.3f.png", s.time_s);
   write_png(map, plots / file);
+}
+
+/// The run's deceleration read as a measured record would be (the `record` kind's
+/// interpretation, impact at t = 0 with the known impact velocity): record.csv and
+/// plots/record_profiles.png, so a simulation and a drop compare column for column.
+void PenetrometerJob::write_record(const std::vector<double>& time_s, const std::vector<double>& deceleration_g,
+                                   const fs::path& out_dir, const fs::path& plots) const {
+  RecordSettings settings;
+  settings.mass_kg = run_->penetrometer_mass_kg();
+  settings.gravity_m_s2 = scene_.model.gravity_m_s2;
+  settings.tip = {scene_.model.shape.base_radius_m, scene_.model.shape.cone_height_m()};
+  settings.impact_velocity_m_s = -scene_.model.velocity_m_s;
+  settings.impact_time_s = 0.0;
+  settings.rate_laws = default_rate_laws();
+  const InterpretedRecord record = interpret_record(time_s, deceleration_g, settings);
+  record_table(record, settings).write(out_dir / "record.csv");
+  write_record_plots(record, settings, name_, plots / "record_profiles.png");
 }
 
 void PenetrometerJob::run(RunContext& context) {
@@ -255,6 +277,7 @@ void PenetrometerJob::run(RunContext& context) {
   progress.finish();
   context.steps = s.step;
   history.write(context.out_dir / "history.csv");
+  if (!cpt() && weight > 0.0) write_record(t_row, deceleration_row, context.out_dir, plots);
   if (pvd.size() > 0) pvd.write(fields / "particles.pvd");
 
   // Figures.

@@ -14,6 +14,7 @@ const std::vector<KindEntry>& registered_kinds() {
       {"calibration", "fit of the SSMC softening factor η to a lab triaxial curve (dissipated work)", &make_calibration_job},
       {"ffp", "free-fall penetrometer impact on sand: axisymmetric MPM, rigid or elastic body, contact", &make_ffp_job},
       {"cpt", "the FFP pushed at a constant velocity: quasi-static reaction profile F_0(z)", &make_cpt_job},
+      {"record", "a measured FFP drop interpreted: penetration, velocity, q_dyn and q_sbc against depth", &make_record_job},
   };
   return kinds;
 }

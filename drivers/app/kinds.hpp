@@ -11,5 +11,6 @@ std::unique_ptr<Job> make_triaxial_job(SceneReader& scene, const std::filesystem
 std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_ffp_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_cpt_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+std::unique_ptr<Job> make_record_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 
 }  // namespace ffp

@@ -1,0 +1,80 @@
+/// The `record` scene kind: a measured FFP drop interpreted (drivers/ffp_record.hpp).
+///
+/// Scene keys (drivers/app/record_scene.hpp; the README's "record" table):
+///   record_csv           time_s and deceleration_g (net, + slowing) or acceleration_m_s2 (sensor, sky +),
+///                        optionally pore_pressure_kPa; relative to the scene file
+///   sensor_range_g | sensor_range_m_s2   the channel's full scale (saturation test)
+///   ffp                  {mass_kg, tip cone | flat, cone_apex_angle_deg 60, base_radius_m 0.04375, volume_m3 (water)}
+///   impact_velocity_m_s  (+ down; absent: integrated from rest at the first sample)
+///   impact_time_s | impact_threshold_g 1
+///   medium air | water, fluid_density_kg_m3 (1.2 | 1020), drag_coefficient 0, gravity_m_s2 9.81
+///   rate_laws            {reference_velocity_m_s 0.02, q_sbc_area projected | mantle, log {K 0.1},
+///                         brilli {K 0.31}, asinh {K 0.1}} (absent: all three at their defaults)
+/// Writes history.csv (drivers/app/record_output.hpp), plots/depth_profiles.png and the summary.
+#include <memory>
+#include <ostream>
+
+#include "drivers/app/kinds.hpp"
+#include "drivers/app/record_output.hpp"
+#include "drivers/app/record_scene.hpp"
+
+namespace ffp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class RecordJob : public Job {
+ public:
+  RecordJob(std::string name, RecordScene scene, RecordSamples samples)
+      : name_(std::move(name)), scene_(std::move(scene)), samples_(std::move(samples)) {}
+
+  void describe(std::ostream& out) const override {
+    out << "record: " << samples_.time_s.size() << " samples of " << samples_.channel << " from "
+        << samples_.time_s.front() << " to " << samples_.time_s.back() << " s\n";
+  }
+
+  void run(RunContext& context) override {
+    InterpretedRecord record;
+    try {
+      record = interpret_record(samples_.time_s, samples_.deceleration_g, scene_.settings);
+    } catch (const RecordError& e) {
+      throw SceneError(scene_.record_csv.string() + ": " + e.what());
+    }
+    std::vector<std::pair<std::string, std::vector<double>>> extra;
+    if (samples_.pore_pressure_kPa) {
+      const auto& u = *samples_.pore_pressure_kPa;
+      extra.push_back({"pore_pressure_kPa", std::vector<double>(u.begin() + static_cast<long>(record.impact_index) + 1, u.end())});
+    }
+    record_table(record, scene_.settings, extra).write(context.out_dir / "history.csv");
+    context.summary = record_summary(record, scene_.settings);
+    context.summary["samples"] = samples_.time_s.size();
+    context.summary["channel"] = samples_.channel;
+    context.steps = static_cast<long>(record.time_s.size());
+    fs::create_directories(context.out_dir / "plots");
+    write_record_plots(record, scene_.settings, name_, context.out_dir / "plots" / "depth_profiles.png");
+  }
+
+ private:
+  std::string name_;
+  RecordScene scene_;
+  RecordSamples samples_;
+};
+
+}  // namespace
+
+std::unique_ptr<Job> make_record_job(SceneReader& scene, const fs::path& scene_dir) {
+  std::string name = scene.text("name", "record");
+  RecordScene record = read_record_scene(scene, scene_dir);
+  scene.finish("a record scene");
+  RecordSamples samples = load_record(record);
+  // Interpret once here, so a record without an impact is bad input (exit 2) before any output.
+  try {
+    (void)interpret_record(samples.time_s, samples.deceleration_g, record.settings);
+  } catch (const RecordError& e) {
+    throw SceneError(record.record_csv.string() + ": " + e.what());
+  }
+  return std::make_unique<RecordJob>(std::move(name), std::move(record), std::move(samples));
+}
+
+}  // namespace ffp
