@@ -22,6 +22,10 @@ struct RunContext {
   bool show_progress = true;
   json summary = json::object();     ///< the figures the job reports
   long steps = 0;                    ///< increments or time steps taken
+  /// Runs a job may start as `ffp run` processes of its own (an inverse fit's model runs):
+  /// at most this many at once (0: one per core), on this machine or through Slurm.
+  int jobs = 0;
+  bool slurm = false;
 };
 
 /// A run that failed numerically (not bad input): exit code 1. When

@@ -15,6 +15,7 @@ const std::vector<KindEntry>& registered_kinds() {
       {"ffp", "free-fall penetrometer impact on sand: axisymmetric MPM, rigid or elastic body, contact", &make_ffp_job},
       {"cpt", "the FFP pushed at a constant velocity: quasi-static reaction profile F_0(z)", &make_cpt_job},
       {"record", "a measured FFP drop interpreted: penetration, velocity, q_dyn and q_sbc against depth", &make_record_job},
+      {"inverse", "soil parameters of an ffp scene fitted to a record by Ceres over MPM runs", &make_inverse_job},
   };
   return kinds;
 }

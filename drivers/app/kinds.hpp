@@ -12,5 +12,6 @@ std::unique_ptr<Job> make_calibration_job(SceneReader& scene, const std::filesys
 std::unique_ptr<Job> make_ffp_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_cpt_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 std::unique_ptr<Job> make_record_job(SceneReader& scene, const std::filesystem::path& scene_dir);
+std::unique_ptr<Job> make_inverse_job(SceneReader& scene, const std::filesystem::path& scene_dir);
 
 }  // namespace ffp

@@ -15,10 +15,12 @@ constexpr const char* kUsage = R"(usage: ffp <command> [options]
 
 Commands:
   run SCENE.json [--out DIR] [--force] [--set key=value ...] [--quiet]
+        [--jobs N] [--scheduler local|slurm]
         Run a scene; write DIR/summary.json, DIR/history.csv, DIR/plots/
         (default DIR: results/<scene name>). --set overrides any scene key,
         e.g. --set material.E_kPa=5000. A DIR holding files ffp did not
-        write is refused unless --force.
+        write is refused unless --force. An inverse fit runs its model runs
+        N at a time (default: one per core), or as Slurm job arrays.
   check SCENE.json [--set key=value ...]
         Validate a scene and print it with defaults filled in.
   sweep SCENE.json --set key=v1,v2,... [--set ...] [--jobs N] [--out DIR] [--force]
@@ -37,7 +39,8 @@ Commands:
         Measure the speed of the constitutive updates and the MPM step.
   --help, --version
 
-Scene kinds: point, triaxial, calibration, integration_error, mpm, ffp, cpt (see README.md).
+Scene kinds: point, triaxial, calibration, integration_error, mpm, ffp, cpt, record, inverse
+(see README.md).
 Exit codes: 0 done, 1 run failed, 2 bad input, 130 interrupted.
 )";
 

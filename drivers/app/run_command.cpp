@@ -34,6 +34,8 @@ struct SceneArguments {
   std::optional<fs::path> out;
   bool quiet = false;
   bool force = false;  ///< replace an --out folder that holds files ffp did not write
+  int jobs = 0;        ///< --jobs: an inverse fit's model runs at once (0: one per core)
+  bool slurm = false;  ///< --scheduler slurm: an inverse fit's model runs as Slurm job arrays
 };
 
 SceneArguments parse_scene_arguments(const Arguments& args, const char* command, bool allow_out) {
@@ -54,6 +56,16 @@ SceneArguments parse_scene_arguments(const Arguments& args, const char* command,
       parsed.force = true;
     } else if (a == "--quiet" || a == "-q") {
       parsed.quiet = true;
+    } else if (allow_out && a == "--jobs") {
+      const std::string n = value("--jobs");
+      char* end = nullptr;
+      const long jobs = std::strtol(n.c_str(), &end, 10);
+      if (n.empty() || *end != '\0' || jobs < 1 || jobs > 64) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 64]");
+      parsed.jobs = static_cast<int>(jobs);
+    } else if (allow_out && a == "--scheduler") {
+      const std::string v = value("--scheduler");
+      if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
+      parsed.slurm = v == "slurm";
     } else if (!a.empty() && a[0] == '-') {
       throw SceneError(std::string("ffp ") + command + ": unknown option '" + a + "' (try ffp --help)");
     } else if (parsed.scene_file.empty()) {
@@ -116,6 +128,8 @@ int command_run(const Arguments& args) {
     context.out_dir = directory.path();
     context.scene_dir = loaded.scene_dir;
     context.show_progress = !a.quiet;
+    context.jobs = a.jobs;
+    context.slurm = a.slurm;
     const auto start = std::chrono::steady_clock::now();
     loaded.job->run(context);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,0 +1,260 @@
+/// The `inverse` scene kind: soil (and contact) parameters of an `ffp` scene
+/// fitted by Ceres so that the MPM's deceleration against depth matches a
+/// record (drivers/app/inverse_scene.hpp for the keys). Every model point is an
+/// independent `ffp run` process with its own folder under runs/ (a
+/// forward-difference Jacobian's p + 1 runs side by side, --jobs N, or as a
+/// Slurm job array with --scheduler slurm); model and record go through the
+/// same interpretation (record.csv of each run, drivers/ffp_record.hpp).
+///
+/// Writes summary.json (the parameters with standard errors, misfit, runs,
+/// iterations), history.csv (cost and parameters per accepted iteration),
+/// profile.csv (the record, the starting and the fitted run at the fit's
+/// depths), plots/fit.png, and runs/<each model run>.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <thread>
+
+#include "drivers/app/inverse_scene.hpp"
+#include "drivers/app/kinds.hpp"
+#include "drivers/app/record_output.hpp"
+#include "drivers/app/version.hpp"
+#include "drivers/output/csv_writer.hpp"
+#include "reports/plot.hpp"
+#include "reports/run_pool.hpp"
+
+namespace ffp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A deceleration–depth curve's loading branch: the rows up to the deepest point.
+struct Profile {
+  std::vector<double> depth_m, deceleration_g;
+
+  static Profile loading_branch(const std::vector<double>& depth, const std::vector<double>& deceleration) {
+    Profile p;
+    const std::size_t deepest = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
+    for (std::size_t k = 0; k <= deepest; ++k) {
+      if (!p.depth_m.empty() && depth[k] <= p.depth_m.back()) continue;  // keep depth increasing
+      p.depth_m.push_back(depth[k]);
+      p.deceleration_g.push_back(deceleration[k]);
+    }
+    return p;
+  }
+
+  /// Linear interpolation; beyond the deepest point, the value there (a run that
+  /// stops short keeps a continuous misfit as a parameter moves).
+  double at(double z) const {
+    if (z <= depth_m.front()) return deceleration_g.front();
+    if (z >= depth_m.back()) return deceleration_g.back();
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(depth_m.begin(), depth_m.end(), z) - depth_m.begin());
+    const double w = (z - depth_m[k - 1]) / (depth_m[k] - depth_m[k - 1]);
+    return (1.0 - w) * deceleration_g[k - 1] + w * deceleration_g[k];
+  }
+};
+
+struct ModelRun {
+  Profile profile;
+  double peak_deceleration_g = 0.0, final_penetration_m = 0.0;
+};
+
+ModelRun read_model_run(const fs::path& dir) {
+  const CsvData record = read_numeric_csv(dir / "record.csv");
+  ModelRun run;
+  run.profile = Profile::loading_branch(record.column("penetration_m"), record.column("deceleration_g"));
+  std::ifstream in(dir / "summary.json");
+  const json summary = json::parse(in);
+  run.peak_deceleration_g = summary.at("peak_deceleration_g").get<double>();
+  run.final_penetration_m = summary.at("final_penetration_m").get<double>();
+  return run;
+}
+
+class InverseJob : public Job {
+ public:
+  InverseJob(std::string name, InverseScene scene, std::optional<InterpretedRecord> record)
+      : name_(std::move(name)), scene_(std::move(scene)), record_(std::move(record)) {
+    if (scene_.profile) {
+      target_ = Profile::loading_branch(record_->penetration_m, record_->deceleration_g);
+      const double deepest = target_.depth_m.back();
+      for (int i = 0; i < scene_.profile_points; ++i) depths_.push_back(deepest * (i + 0.5) / scene_.profile_points);
+    }
+  }
+
+  void describe(std::ostream& out) const override {
+    out << "inverse: " << scene_.parameters.size() << " parameter(s) of " << scene_.forward_scene.string() << "; "
+        << residual_count() << " residuals";
+    if (scene_.profile) out << " (" << scene_.profile_points << " profile depths to " << target_.depth_m.back() << " m)";
+    out << "; each Jacobian is " << scene_.parameters.size() + 1 << " runs side by side\n";
+  }
+
+  void run(RunContext& context) override;
+
+ private:
+  int residual_count() const {
+    return (scene_.profile ? scene_.profile_points : 0) + (scene_.peak_deceleration_g ? 1 : 0) +
+           (scene_.final_penetration_m ? 1 : 0);
+  }
+
+  std::vector<double> residuals(const ModelRun& run) const {
+    std::vector<double> r;
+    const double profile_factor = scene_.profile_weight / scene_.profile_scale_g / std::sqrt(scene_.profile_points);
+    if (scene_.profile)
+      for (double z : depths_) r.push_back(profile_factor * (run.profile.at(z) - target_.at(z)));
+    if (const auto& t = scene_.peak_deceleration_g) r.push_back(t->weight * (run.peak_deceleration_g - t->value) / t->scale);
+    if (const auto& t = scene_.final_penetration_m) r.push_back(t->weight * (run.final_penetration_m - t->value) / t->scale);
+    return r;
+  }
+
+  RunRequest request(const std::vector<double>& x) const {
+    RunRequest q{"ffp", scene_.forward_scene, scene_.forward_overrides, 0.0};
+    q.overrides.push_back("output.field_times_s=[]");  // no particle fields: only the deceleration is compared
+    for (std::size_t j = 0; j < x.size(); ++j) q.overrides.push_back(assignment(scene_.parameters[j].name, x[j]));
+    return q;
+  }
+
+  std::string name_;
+  InverseScene scene_;
+  std::optional<InterpretedRecord> record_;
+  Profile target_;
+  std::vector<double> depths_;
+};
+
+void InverseJob::run(RunContext& context) {
+  const fs::path runs = context.out_dir / "runs";
+  const int jobs = context.jobs > 0 ? context.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const Scheduler scheduler = context.slurm ? Scheduler::slurm : Scheduler::local;
+  int batches = 0, failed = 0;
+  std::string last_failure;
+  auto run_points = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<RunRequest> requests;
+    for (const auto& x : points) requests.push_back(request(x));
+    return run_all("/proc/self/exe", requests, runs, FFP_VERSION, jobs, scheduler);
+  };
+  const BatchEvaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
+    ++batches;
+    if (context.show_progress) std::fprintf(stderr, "inverse %s: batch %d, %zu model run(s)\n", name_.c_str(), batches, points.size());
+    const std::vector<RunOutcome> outcomes = run_points(points);
+    std::vector<std::vector<double>> out;
+    for (const RunOutcome& o : outcomes) {
+      if (o.exit_code != 0) {
+        ++failed;
+        last_failure = o.error;
+        out.emplace_back();  // Ceres steps around a point whose run failed
+        continue;
+      }
+      out.push_back(residuals(read_model_run(o.out_dir)));
+    }
+    return out;
+  };
+  BoundedFit fit;
+  try {
+    fit = fit_bounded_least_squares(scene_.parameters, residual_count(), evaluate, scene_.fit);
+  } catch (const std::runtime_error& e) {
+    throw RunFailure(std::string("inverse: ") + e.what() + (last_failure.empty() ? "" : " (last run error: " + last_failure + ")"));
+  }
+
+  std::vector<double> initial;
+  for (const FitParameter& q : scene_.parameters) initial.push_back(q.initial);
+  const std::vector<RunOutcome> ends = run_points({initial, fit.values});  // both cached by now
+  const ModelRun start = read_model_run(ends[0].out_dir), fitted = read_model_run(ends[1].out_dir);
+
+  // history.csv: the accepted iterations.
+  std::vector<std::string> columns = {"iteration", "cost"};
+  for (const FitParameter& q : scene_.parameters) columns.push_back(q.name);
+  CsvTable history(columns);
+  for (const FitIteration& it : fit.history) {
+    std::vector<double> row = {static_cast<double>(it.iteration), it.cost};
+    row.insert(row.end(), it.values.begin(), it.values.end());
+    history.add_row(row);
+  }
+  history.write(context.out_dir / "history.csv");
+
+  json& sum = context.summary;
+  json parameters = json::object();
+  for (std::size_t j = 0; j < scene_.parameters.size(); ++j) {
+    const FitParameter& q = scene_.parameters[j];
+    parameters[q.name] = {{"value", fit.values[j]},
+                          {"standard_error", fit.standard_errors[j] ? json(*fit.standard_errors[j]) : json(nullptr)},
+                          {"initial", q.initial},
+                          {"lower", q.lower},
+                          {"upper", q.upper},
+                          {"step", q.step}};
+  }
+  sum["parameters"] = parameters;
+  if (!fit.correlation.empty()) sum["correlation"] = fit.correlation;
+  sum["cost_initial"] = fit.initial_cost;
+  sum["cost_final"] = fit.final_cost;
+  sum["residuals"] = fit.residuals.size();
+  sum["iterations"] = fit.iterations;
+  sum["converged"] = fit.converged;
+  sum["termination"] = fit.termination;
+  sum["model_runs"] = fit.evaluations;
+  sum["failed_model_runs"] = failed;
+  sum["run_batches"] = batches;
+  sum["jobs"] = jobs;
+  sum["scheduler"] = context.slurm ? "slurm" : "local";
+  sum["fitted_run"] = fs::relative(ends[1].out_dir, context.out_dir).string();
+  sum["initial_run"] = fs::relative(ends[0].out_dir, context.out_dir).string();
+  sum["fitted_peak_deceleration_g"] = fitted.peak_deceleration_g;
+  sum["fitted_final_penetration_m"] = fitted.final_penetration_m;
+  sum["initial_peak_deceleration_g"] = start.peak_deceleration_g;
+  sum["initial_final_penetration_m"] = start.final_penetration_m;
+  if (record_) {
+    sum["record_peak_deceleration_g"] = record_->peak_deceleration_g;
+    sum["record_max_penetration_m"] = record_->max_penetration_m;
+  }
+  if (scene_.peak_deceleration_g) sum["target_peak_deceleration_g"] = scene_.peak_deceleration_g->value;
+  if (scene_.final_penetration_m) sum["target_final_penetration_m"] = scene_.final_penetration_m->value;
+  context.steps = fit.iterations;
+
+  const fs::path plots = context.out_dir / "plots";
+  fs::create_directories(plots);
+  Plot p;
+  p.title = name_ + ": deceleration against depth";
+  p.x_label = "net deceleration (g)";
+  p.y_label = "depth (m)";
+  p.reverse_y = true;
+  p.key_position = "bottom right";
+  if (scene_.profile) {
+    double squares = 0.0;
+    CsvTable profile({"depth_m", "record_deceleration_g", "initial_deceleration_g", "fitted_deceleration_g"});
+    for (double z : depths_) {
+      profile.add_row({z, target_.at(z), start.profile.at(z), fitted.profile.at(z)});
+      squares += std::pow(fitted.profile.at(z) - target_.at(z), 2);
+    }
+    profile.write(context.out_dir / "profile.csv");
+    sum["profile_rms_misfit_g"] = std::sqrt(squares / static_cast<double>(depths_.size()));
+    p.series.push_back({record_->deceleration_g, record_->penetration_m, "record", "points pointtype 7 pointsize 0.4"});
+  }
+  p.series.push_back({start.profile.deceleration_g, start.profile.depth_m, "starting run", "lines dashtype 2"});
+  p.series.push_back({fitted.profile.deceleration_g, fitted.profile.depth_m, "fitted run"});
+  write_png(p, plots / "fit.png");
+}
+
+}  // namespace
+
+std::unique_ptr<Job> make_inverse_job(SceneReader& scene, const fs::path& scene_dir) {
+  std::string name = scene.text("name", "inverse");
+  InverseScene inverse = read_inverse_scene(scene, scene_dir);
+  scene.finish("an inverse scene");
+  std::optional<InterpretedRecord> record;
+  if (inverse.record) {
+    const RecordSamples samples = load_record(*inverse.record);
+    try {
+      record = interpret_record(samples.time_s, samples.deceleration_g, inverse.record->settings);
+    } catch (const RecordError& e) {
+      throw SceneError("record.record_csv: " + inverse.record->record_csv.string() + ": " + e.what());
+    }
+    if (inverse.profile && record->max_penetration_m <= 0.0)
+      throw SceneError("record: the record never penetrates (its deepest point is at " +
+                       std::to_string(record->max_penetration_m) + " m): nothing to match");
+  }
+  return std::make_unique<InverseJob>(std::move(name), std::move(inverse), std::move(record));
+}
+
+}  // namespace ffp

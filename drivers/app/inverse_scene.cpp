@@ -1,0 +1,125 @@
+#include "drivers/app/inverse_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "drivers/app/job.hpp"
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+std::string assignment(const std::string& key, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return key + "=" + buffer;
+}
+
+namespace {
+
+/// The forward scene must be an ffp scene that takes `overrides`; its own error otherwise.
+void check_forward(const json& forward, const fs::path& forward_dir, const std::vector<std::string>& overrides,
+                   const std::string& what) {
+  json scene = forward;
+  json echo;
+  try {
+    for (const std::string& a : overrides) apply_override(scene, a);
+    (void)make_job(scene, forward_dir, echo);
+  } catch (const SceneError& e) {
+    throw SceneError(what + ": the forward scene refuses it: " + e.what());
+  }
+}
+
+std::optional<ScalarTarget> read_target(SceneReader& scene, const char* key, const char* value_key, const Range& range,
+                                        const char* scale_key, double default_scale) {
+  if (!scene.has(key)) return std::nullopt;
+  SceneReader t = scene.object(key);
+  ScalarTarget target;
+  target.value = t.number(value_key, range);
+  target.weight = t.number("weight", Range::non_negative(1e6), 1.0);
+  target.scale = t.number(scale_key, Range::positive(1e6), default_scale);
+  t.finish(std::string(key) + " (" + value_key + ", weight, " + scale_key + ")");
+  return target;
+}
+
+}  // namespace
+
+InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
+  InverseScene out;
+  const std::string forward = scene.text("forward_scene");
+  out.forward_scene = (fs::path(forward).is_absolute() ? fs::path(forward) : scene_dir / forward).lexically_normal();
+  json forward_json;
+  try {
+    forward_json = load_scene_file(out.forward_scene.string());
+  } catch (const SceneError& e) {
+    scene.fail("forward_scene", e.what());
+  }
+  if (forward_json.value("kind", "") != "ffp") scene.fail("forward_scene", "must be a scene of kind ffp");
+  if (const std::optional<json> list = scene.raw("forward_overrides")) {
+    if (!list->is_array()) scene.fail("forward_overrides", "must be a list of \"key=value\" strings");
+    for (const json& item : *list) {
+      if (!item.is_string() || item.get<std::string>().find('=') == std::string::npos)
+        scene.fail("forward_overrides", "must be a list of \"key=value\" strings");
+      out.forward_overrides.push_back(item.get<std::string>());
+    }
+  }
+  const fs::path forward_dir = out.forward_scene.parent_path();
+  check_forward(forward_json, forward_dir, out.forward_overrides, "forward_overrides");
+
+  std::vector<SceneReader> parameters = scene.objects("parameters", 1, 6);
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    SceneReader& p = parameters[k];
+    FitParameter q;
+    q.name = p.text("key");
+    const auto known = std::find(std::begin(kInverseKeys), std::end(kInverseKeys), q.name);
+    if (known == std::end(kInverseKeys)) {
+      std::string allowed;
+      for (const char* key : kInverseKeys) allowed += (allowed.empty() ? "" : ", ") + std::string(key);
+      p.fail("key", "'" + q.name + "' cannot be fitted: must be one of " + allowed);
+    }
+    for (std::size_t j = 0; j < k; ++j)
+      if (out.parameters[j].name == q.name) p.fail("key", "'" + q.name + "' is fitted twice");
+    q.lower = p.number("lower", Range{});
+    q.upper = p.number("upper", Range::open(q.lower, std::numeric_limits<double>::max(), "(> lower)"));
+    q.initial = p.number("initial", Range::closed(q.lower, q.upper, "(within [lower, upper])"));
+    // 2 % of the range: beyond the cell-crossing ripple of the MPM answer, small against the bounds.
+    q.step = p.number("step", Range::open(0.0, q.upper - q.lower, "(> 0 and < upper − lower)"), 0.02 * (q.upper - q.lower));
+    p.finish("parameters[] (key, initial, lower, upper, step)");
+    for (const auto& [what, value] : {std::pair{"initial", q.initial}, {"lower", q.lower}, {"upper", q.upper}}) {
+      std::vector<std::string> overrides = out.forward_overrides;
+      overrides.push_back(assignment(q.name, value));
+      check_forward(forward_json, forward_dir, overrides, p.path() + "." + what);
+    }
+    out.parameters.push_back(q);
+  }
+
+  if (scene.has("record")) {
+    SceneReader r = scene.object("record");
+    out.record = read_record_scene(r, scene_dir);
+    r.finish("record (the keys of a record scene)");
+  }
+  if (scene.has("profile") && !out.record) scene.fail("profile", "matches a record: give record {record_csv, …}");
+  if (out.record) {
+    out.profile = true;
+    SceneReader pr = scene.object("profile");
+    out.profile_points = pr.integer("points", 3, 10000, 40);
+    out.profile_weight = pr.number("weight", Range::non_negative(1e6), 1.0);
+    out.profile_scale_g = pr.number("scale_g", Range::positive(1e6, "g"), 1.0);
+    pr.finish("profile (points, weight, scale_g)");
+    if (out.profile_weight == 0.0) out.profile = false;
+  }
+  out.peak_deceleration_g = read_target(scene, "peak_deceleration", "target_g", Range::open(-1.0, 1e5, "g"), "scale_g", 1.0);
+  out.final_penetration_m =
+      read_target(scene, "final_penetration", "target_m", Range::positive(100.0, "m"), "scale_m", 0.01);
+  if (!out.profile && !out.peak_deceleration_g && !out.final_penetration_m)
+    scene.fail("record", "nothing to fit: give a record (its profile), peak_deceleration {target_g} or final_penetration {target_m}");
+
+  out.fit.max_iterations = scene.integer("max_iterations", 1, 200, 15);
+  out.fit.function_tolerance = scene.number("function_tolerance", Range::open(0.0, 1.0), 1e-3);
+  out.fit.parameter_tolerance = scene.number("parameter_tolerance", Range::open(0.0, 1.0), 1e-3);
+  return out;
+}
+
+}  // namespace ffp
