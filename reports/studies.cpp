@@ -19,6 +19,7 @@ std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   studies.push_back(ffp_rate_factor_study(scenes_dir));
   studies.push_back(ffp_convergence_study(scenes_dir));
   studies.push_back(ffp_softening_convergence_study(scenes_dir));
+  studies.push_back(inverse_study(scenes_dir));
   return studies;
 }
 

@@ -26,11 +26,14 @@ void make_paths_absolute(json& scene, const fs::path& scene_dir) {
     if (p.is_relative()) holder[key] = fs::weakly_canonical(fs::absolute(scene_dir / p)).string();
   };
   fix(scene, "lab_curve_csv");
+  fix(scene, "record_csv");     // a record
+  fix(scene, "forward_scene");  // an inverse fit, and its record
+  if (scene.contains("record")) fix(scene["record"], "record_csv");
   if (scene.contains("path")) fix(scene["path"], "table_csv");
 }
 
 std::string case_id(std::size_t i) {
-  char id[16];
+  char id[24];
   std::snprintf(id, sizeof id, "%04zu", i);
   return id;
 }

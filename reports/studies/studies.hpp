@@ -19,5 +19,6 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir);
 Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir);
 Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir);
 Study punch_bearing_study(const std::filesystem::path& scenes_dir);
+Study inverse_study(const std::filesystem::path& scenes_dir);
 
 }  // namespace ffp
