@@ -182,3 +182,34 @@ TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array
   CHECK(text.find("| integration_error | ok |") != std::string::npos);
   CHECK(text.find("FAILED") == std::string::npos);
 }
+
+TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job array and fits as a local one",
+          "[cli][scheduler][slurm][inverse]") {
+  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
+  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
+    WARN("skipped: no Slurm here (see the sweep test above)");
+    return;
+  }
+  Scratch scratch;
+  auto fit = [&](const std::string& name, const std::string& scheduler) {
+    return run_ffp({"run", std::string(FFP_SOURCE_DIR) + "/data/scenes/inverse_experiment.json", "--out",
+                    (scratch.path() / name).string(), "--quiet", "--scheduler", scheduler, "--set",
+                    "forward_overrides=[\"mesh.min_cell_m=0.02\",\"end_time_s=0.08\"]", "--set", "max_iterations=2"},
+                   scratch.path());
+  };
+  const CommandResult slurm = fit("slurm", "slurm");
+  INFO(slurm.err);
+  REQUIRE(slurm.exit_code == 0);
+  CHECK(slurm.err.find("Slurm job") != std::string::npos);
+  const CommandResult local = fit("local", "local");
+  REQUIRE(local.exit_code == 0);
+  auto summary = [&](const std::string& name) {
+    std::ifstream in(scratch.path() / name / "summary.json");
+    return nlohmann::json::parse(in);
+  };
+  const auto a = summary("slurm"), b = summary("local");
+  CHECK(a["scheduler"] == "slurm");
+  // The model runs are deterministic, so the two fits take the same steps to the same value.
+  CHECK(a["parameters"]["material.phi_peak_deg"]["value"] == b["parameters"]["material.phi_peak_deg"]["value"]);
+  CHECK(a["model_runs"] == b["model_runs"]);
+}
