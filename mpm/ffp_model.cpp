@@ -164,6 +164,7 @@ FfpRun::FfpRun(const FfpDescription& d)
   Simulation& s = simulation_;
   if (d.deformable) {
     if (d.prescribed) throw std::invalid_argument("a prescribed (CPT) penetrometer is rigid");
+    if (d.project_particles) throw std::invalid_argument("the particle projection is for a rigid penetrometer");
     // Own nodal field for the penetrometer (two-body contact), and the exact mass.
     s.grid.fields.resize(2);
     s.grid.fields[1].resize(s.grid.nodes());
@@ -195,6 +196,7 @@ FfpRun::FfpRun(const FfpDescription& d)
     settings.external_force_N = d.external_force_N;
     settings.contact = d.contact;
     settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
+    settings.project_particles = d.project_particles;
     rigid_ = std::make_unique<RigidPenetrometer>(settings);
     rigid_->attach(s);
     s.rigid_speed_m_s = std::abs(d.velocity_m_s);

@@ -80,6 +80,9 @@ struct FfpDescription {
   double external_force_N = 0.0;  ///< on a free rigid body, + up
   ContactLaw contact;
   double detection_cells = 0.0;  ///< nodes within this many min cells outside the outline are penetrometer nodes
+  /// Rigid only: soil particles inside the outline after a step are put back onto it
+  /// (RigidPenetrometerSettings::project_particles).
+  bool project_particles = false;
   FfpMesh mesh;
   SolverSettings solver;
   /// The PIC blend is a numerical viscosity of about (1 − α)·h²/Δt: applied per

@@ -15,6 +15,10 @@ struct PenetrometerState {
   double reaction_N = 0.0;        ///< vertical force of the soil on the penetrometer over the last step
   double impulse_N_s = 0.0;       ///< Σ reaction·Δt over all steps (exact, not sampled)
   std::size_t contact_nodes = 0;  ///< nodes where the soil's velocity was corrected in the last step
+  /// Particle projection (rigid, contact.project_particles): soil particles put back onto the
+  /// outline in the last step, and how deep the deepest of them was before that.
+  std::size_t projected_particles = 0;
+  double projection_depth_m = 0.0;
 };
 
 /// A node shared by soil and penetrometer, with the outline's outward normal there.

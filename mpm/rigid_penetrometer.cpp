@@ -1,5 +1,6 @@
 #include "mpm/rigid_penetrometer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -23,6 +24,11 @@ void RigidPenetrometer::attach(Simulation& s) {
                            {"apply_rigid_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last, {"move_rigid_penetrometer", [this](Simulation& sim) { move(sim); }});
+  // After the body's move: particles (moved in update_particles or move_particles) and the
+  // outline are then both at t + Δt.
+  if (settings_.project_particles)
+    s.stages.insert_after("move_rigid_penetrometer",
+                          {"project_soil_particles", [this](Simulation& sim) { project_particles(sim); }});
 }
 
 void RigidPenetrometer::find_nodes(const Simulation& s) {
@@ -163,6 +169,33 @@ void RigidPenetrometer::move(Simulation& s) {
   tip_z_ += s.dt_s * state_.velocity_m_s;
   state_.displacement_m = tip_z_ - tip_z0_;
   s.rigid_speed_m_s = std::abs(state_.velocity_m_s);
+}
+
+void RigidPenetrometer::project_particles(Simulation& s) {
+  // x ← x + |d|·n for a particle at signed distance d < 0: the closest point of the
+  // outline (n is the outward normal there; inside the body the closest point is on
+  // the flank, the fillet, the shaft or the top, never the apex, so n is well defined).
+  // Positions only: see the header for why the velocity is left alone.
+  Particles& P = s.particles;
+  const double R = settings_.shape.base_radius_m, tip = tip_z_, top = tip_z_ + settings_.shape.total_length_m();
+  std::size_t projected = 0;
+  double deepest = 0.0;
+  for (const Body& body : s.bodies) {
+    if (body.field != settings_.soil_field) continue;
+    for (std::size_t p = body.begin; p < body.end; ++p) {
+      const double r = P.r[p], z = P.z[p];
+      if (r >= R || z <= tip || z >= top) continue;  // outside the outline's bounding box (as soil_intrusion_m)
+      const SurfaceQuery q = geometry_.query(r, z, tip);
+      if (!(q.signed_distance_m < 0.0)) continue;
+      const double depth = -q.signed_distance_m;
+      P.r[p] = r + depth * q.normal_r;
+      P.z[p] = z + depth * q.normal_z;
+      deepest = std::max(deepest, depth);
+      ++projected;
+    }
+  }
+  state_.projected_particles = projected;
+  state_.projection_depth_m = deepest;
 }
 
 }  // namespace ffp::mpm

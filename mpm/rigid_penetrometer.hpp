@@ -24,6 +24,16 @@
 /// In both, the velocity is prescribed to every penetrometer node (eq. 2–3) by
 /// using it as the contact law's surface velocity, before the soil's particles
 /// are updated (Fig. 5).
+///
+/// Particle projection (optional, project_particles): after the body has moved,
+/// every soil particle inside the exact outline is put back onto it along the
+/// outline's normal. Why: the contact acts at nodes, and a particle moves with
+/// the blend of corrected and uncorrected nodes in its support, so on a
+/// non-conforming cone it creeps into the body a little every step while the
+/// soil slides up the flank; the creep accumulates (review F1, issue 13). The
+/// projection is purely positional: the particle keeps its velocity, which the
+/// grid contact has already corrected (and will again at the next step), so the
+/// soil's momentum, the body's impulse and their exact balance are unchanged.
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +63,8 @@ struct RigidPenetrometerSettings {
   /// Nodes with signed distance ≤ this are penetrometer nodes (0: inside or on the outline).
   double detection_distance_m = 0.0;
   std::uint8_t soil_field = 0;
+  /// Put soil particles found inside the outline after a step back onto it (see above).
+  bool project_particles = false;
 };
 
 class RigidPenetrometer {
@@ -75,6 +87,8 @@ class RigidPenetrometer {
   void apply_contact_remapped(Simulation& simulation);
   /// x_tip ← x_tip + Δt·v (the particles' update rule).
   void move(Simulation& simulation);
+  /// Soil particles inside the outline (at the body's new position) onto it, along its normal.
+  void project_particles(Simulation& simulation);
 
   /// A prescribed body's velocity from the next step on (e.g. to hold it still).
   void set_prescribed_velocity(double velocity_m_s) { settings_.velocity_m_s = velocity_m_s; }

@@ -245,7 +245,8 @@ void PenetrometerJob::run(RunContext& context) {
   fields_due();
   double next_history = output.history_interval_s;
   double max_penetration = 0.0, intrusion = 0.0, dt_min = s.dt_s, peak_step = -std::numeric_limits<double>::infinity();
-  std::size_t most_contact_nodes = 0, most_disconnected = 0, most_inflated = 0;
+  std::size_t most_contact_nodes = 0, most_disconnected = 0, most_inflated = 0, most_projected = 0;
+  double projection_depth = 0.0;
   double max_volume_ratio = 1.0;
   const double end = scene_.end_time_s;
   Progress progress(std::string(cpt() ? "cpt " : "ffp ") + name_, end, context.show_progress);
@@ -259,6 +260,8 @@ void PenetrometerJob::run(RunContext& context) {
       intrusion = std::max(intrusion, ffp.soil_intrusion_m());
       peak_step = std::max(peak_step, (ffp.state().reaction_N - weight) / weight);
       most_contact_nodes = std::max(most_contact_nodes, ffp.state().contact_nodes);
+      most_projected = std::max(most_projected, ffp.state().projected_particles);
+      projection_depth = std::max(projection_depth, ffp.state().projection_depth_m);
       if (s.time_s >= next_history * (1.0 - 1e-12) || s.time_s >= end * (1.0 - 1e-12)) {
         record();
         most_disconnected = std::max(most_disconnected, ffp.disconnected_soil_particles());
@@ -358,6 +361,11 @@ void PenetrometerJob::run(RunContext& context) {
   sum["dt_min_s"] = dt_min;
   sum["max_soil_intrusion_m"] = intrusion;
   sum["max_soil_intrusion_cells"] = intrusion / h;
+  // contact.project_particles: the most particles put back onto the outline in one step, and the
+  // deepest one of them before it was (the intrusion of one step; 0 without the projection).
+  sum["projected_particles_max"] = most_projected;
+  sum["max_projection_depth_m"] = projection_depth;
+  sum["max_projection_depth_cells"] = projection_depth / h;
   sum["contact_nodes_max"] = most_contact_nodes;
   sum["disconnected_particles_max"] = most_disconnected;  // at the history rows
   sum["max_volume_ratio"] = max_volume_ratio;            // largest V/V0 of a soil particle, at the history rows

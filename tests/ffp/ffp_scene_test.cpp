@@ -71,6 +71,16 @@ TEST_CASE("a deformable FFP with a rigid-body force is refused", "[ffp][scene]")
   refused(s, "ffp.rigid_body_force", "rigid penetrometer only");
 }
 
+TEST_CASE("a deformable FFP with the particle projection is refused", "[ffp][scene]") {
+  json s = reference();
+  s["ffp"]["deformable"] = {{"E_kPa", 20000}, {"nu", 0.0}};
+  s["contact"]["project_particles"] = true;
+  refused(s, "contact.project_particles", "rigid penetrometer only");
+  json word = reference();
+  word["contact"]["project_particles"] = "yes";
+  refused(word, "contact.project_particles", "true or false");
+}
+
 TEST_CASE("damping is refused for the dynamic FFP impact", "[ffp][scene]") {
   json s = reference();
   s["solver"]["local_damping"] = 0.05;

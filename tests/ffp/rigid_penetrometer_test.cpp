@@ -129,3 +129,36 @@ TEST_CASE("the soil gains exactly the momentum the rigid FFP loses (contact impu
   CHECK(M * (v0 - run.velocity_down_m_s()) == Approx(impulse).epsilon(1e-10));
   CHECK(-soil == Approx(impulse).epsilon(1e-5));
 }
+
+TEST_CASE("the particle projection moves soil particles only: velocities and stresses stay as the step left them",
+          "[ffp][rigid][projection]") {
+  // The rigid body's reaction is the impulse exchanged at the grid nodes, so a change of a
+  // particle's velocity here would be momentum that neither side accounts for. Stages around
+  // the projection record the particles before and check them after, once sand slides up the cone.
+  FfpDescription d = coarse_ffp();
+  d.project_particles = true;
+  FfpRun run(d);
+  Simulation& s = run.simulation();
+  Particles before;
+  long steps_with_projection = 0, moved = 0;
+  double worst_inside = 0.0;
+  bool unchanged = true;
+  s.stages.insert_before("project_soil_particles", {"record", [&](Simulation& sim) { before = sim.particles; }});
+  s.stages.insert_after("project_soil_particles", {"compare", [&](Simulation& sim) {
+                          const Particles& P = sim.particles;
+                          for (std::size_t p = 0; p < P.size(); ++p) {
+                            unchanged = unchanged && P.vr[p] == before.vr[p] && P.vz[p] == before.vz[p] &&
+                                        P.mass[p] == before.mass[p] && P.volume[p] == before.volume[p] &&
+                                        P.stress[p] == before.stress[p];
+                            moved += P.r[p] != before.r[p] || P.z[p] != before.z[p];
+                          }
+                          steps_with_projection += run.state().projected_particles > 0;
+                          worst_inside = std::max(worst_inside, run.soil_intrusion_m());
+                        }});
+  while (s.time_s < 0.03) run.advance();
+  INFO(steps_with_projection << " steps projected, " << moved << " particle moves, deepest after: " << worst_inside << " m");
+  REQUIRE(steps_with_projection > 0);
+  CHECK(moved > 0);
+  CHECK(unchanged);
+  CHECK(worst_inside < 1e-9 * d.mesh.min_cell_m);
+}
