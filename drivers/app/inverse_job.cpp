@@ -38,6 +38,7 @@ struct Profile {
 
   static Profile loading_branch(const std::vector<double>& depth, const std::vector<double>& deceleration) {
     Profile p;
+    if (depth.empty()) return p;
     const std::size_t deepest = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
     for (std::size_t k = 0; k <= deepest; ++k) {
       if (!p.depth_m.empty() && depth[k] <= p.depth_m.back()) continue;  // keep depth increasing
@@ -147,7 +148,15 @@ void InverseJob::run(RunContext& context) {
         out.emplace_back();  // Ceres steps around a point whose run failed
         continue;
       }
-      out.push_back(residuals(read_model_run(o.out_dir)));
+      try {
+        const ModelRun run = read_model_run(o.out_dir);
+        if (run.profile.depth_m.empty()) throw std::runtime_error("its record.csv has no row after the impact");
+        out.push_back(residuals(run));
+      } catch (const std::exception& e) {  // a run that finished but cannot be read: a failed point
+        ++failed;
+        last_failure = o.out_dir.filename().string() + ": " + e.what();
+        out.emplace_back();
+      }
     }
     return out;
   };
