@@ -194,7 +194,7 @@ TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job arra
   auto fit = [&](const std::string& name, const std::string& scheduler) {
     return run_ffp({"run", std::string(FFP_SOURCE_DIR) + "/data/scenes/inverse_experiment.json", "--out",
                     (scratch.path() / name).string(), "--quiet", "--scheduler", scheduler, "--set",
-                    "forward_overrides=[\"mesh.min_cell_m=0.02\",\"end_time_s=0.08\"]", "--set", "max_iterations=2"},
+                    "forward_overrides=[\"mesh.min_cell_m=0.02\",\"end_time_s=0.05\"]", "--set", "max_iterations=1"},
                    scratch.path());
   };
   const CommandResult slurm = fit("slurm", "slurm");
@@ -209,7 +209,8 @@ TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job arra
   };
   const auto a = summary("slurm"), b = summary("local");
   CHECK(a["scheduler"] == "slurm");
-  // The model runs are deterministic, so the two fits take the same steps to the same value.
+  // The model runs are deterministic, so the two fits take the same steps to the same value (one
+  // iteration of short runs: what is tested is the batches' way through Slurm, not the fit).
   CHECK(a["parameters"]["material.phi_peak_deg"]["value"] == b["parameters"]["material.phi_peak_deg"]["value"]);
   CHECK(a["model_runs"] == b["model_runs"]);
 }
