@@ -90,12 +90,29 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
     // 2 % of the range: beyond the cell-crossing ripple of the MPM answer, small against the bounds.
     q.step = p.number("step", Range::open(0.0, q.upper - q.lower, "(> 0 and < upper − lower)"), 0.02 * (q.upper - q.lower));
     p.finish("parameters[] (key, initial, lower, upper, step)");
-    for (const auto& [what, value] : {std::pair{"initial", q.initial}, {"lower", q.lower}, {"upper", q.upper}}) {
-      std::vector<std::string> overrides = out.forward_overrides;
-      overrides.push_back(assignment(q.name, value));
-      check_forward(forward_json, forward_dir, overrides, p.path() + "." + what);
-    }
     out.parameters.push_back(q);
+  }
+  // The forward scene at every parameter's initial value, then at every lower and every upper
+  // bound at once: three model builds whatever the number of parameters. A refusal names the key,
+  // and so the parameter whose value it was.
+  const std::string refuses = ": the forward scene refuses it: ";
+  for (const char* what : {"initial", "lower", "upper"}) {
+    auto value_of = [&](const FitParameter& q) { return what[0] == 'i' ? q.initial : what[0] == 'l' ? q.lower : q.upper; };
+    std::vector<std::string> overrides = out.forward_overrides;
+    for (const FitParameter& q : out.parameters) overrides.push_back(assignment(q.name, value_of(q)));
+    try {
+      check_forward(forward_json, forward_dir, overrides, what);
+    } catch (const SceneError& e) {
+      const std::string message = e.what();
+      const std::string cause = message.substr(message.find(refuses) + refuses.size());
+      for (std::size_t k = 0; k < out.parameters.size(); ++k)
+        if (cause.find(out.parameters[k].name) != std::string::npos) {
+          char value[32];
+          std::snprintf(value, sizeof value, "%g", value_of(out.parameters[k]));
+          throw SceneError(parameters[k].path() + "." + what + " = " + value + refuses + cause);
+        }
+      throw SceneError(std::string("parameters (their ") + what + " values together)" + refuses + cause);
+    }
   }
 
   if (scene.has("record")) {
