@@ -23,6 +23,7 @@
 #include "drivers/app/record_output.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/csv_writer.hpp"
+#include "drivers/triaxial_test.hpp"
 #include "reports/plot.hpp"
 #include "reports/run_pool.hpp"
 
@@ -51,11 +52,7 @@ struct Profile {
   /// Linear interpolation; beyond the deepest point, the value there (a run that
   /// stops short keeps a continuous misfit as a parameter moves).
   double at(double z) const {
-    if (z <= depth_m.front()) return deceleration_g.front();
-    if (z >= depth_m.back()) return deceleration_g.back();
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(depth_m.begin(), depth_m.end(), z) - depth_m.begin());
-    const double w = (z - depth_m[k - 1]) / (depth_m[k] - depth_m[k - 1]);
-    return (1.0 - w) * deceleration_g[k - 1] + w * deceleration_g[k];
+    return interpolate_linear(depth_m, deceleration_g, std::clamp(z, depth_m.front(), depth_m.back()));
   }
 };
 

@@ -73,6 +73,12 @@ void same_results(const Table& local, const Table& scheduled) {
 
 int shell(const std::string& command) { return std::system(command.c_str()); }
 
+/// The one-node test cluster, started if it is not running (scripts/slurm_local.sh); false where it cannot run.
+bool slurm_cluster_up() {
+  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
+  return shell("command -v sbatch > /dev/null 2>&1") == 0 && shell(start) == 0;
+}
+
 }  // namespace
 
 TEST_CASE("sweep --emit writes six cases and collect lists them all missing before any ran", "[cli][scheduler]") {
@@ -138,8 +144,7 @@ TEST_CASE("GNU parallel runs the emitted cases and collect gives the local sweep
 
 TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected table equals the local one",
           "[cli][scheduler][slurm]") {
-  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
-  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
+  if (!slurm_cluster_up()) {
     WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
          "scripts/slurm_local.sh start says why it cannot start)");
     return;
@@ -158,9 +163,9 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
 
 TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array and reads them back",
           "[cli][scheduler][slurm]") {
-  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
-  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
-    WARN("skipped: no Slurm here (see the sweep test above)");
+  if (!slurm_cluster_up()) {
+    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+         "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
   Scratch scratch;
@@ -185,9 +190,9 @@ TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array
 
 TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job array and fits as a local one",
           "[cli][scheduler][slurm][inverse]") {
-  const std::string start = "bash " + std::string(FFP_SOURCE_DIR) + "/scripts/slurm_local.sh start > /dev/null 2>&1";
-  if (shell("command -v sbatch > /dev/null 2>&1") != 0 || shell(start) != 0) {
-    WARN("skipped: no Slurm here (see the sweep test above)");
+  if (!slurm_cluster_up()) {
+    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+         "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
   Scratch scratch;
