@@ -2,8 +2,10 @@
 # Run every shipped scene with one ffp binary and keep what each run writes, so that
 # two builds can be compared file by file (a refactoring must leave them byte-identical).
 #
-#   scripts/scene_outputs.sh FFP_BINARY OUT_DIR          run every scene into OUT_DIR/<scene>/
-#   scripts/scene_outputs.sh --compare DIR_A DIR_B       compare two such folders; exit 1 on a difference
+#   scripts/scene_outputs.sh FFP_BINARY OUT_DIR [GLOB]   run every scene (or those whose name matches GLOB)
+#                                                        into OUT_DIR/<scene>/
+#   scripts/scene_outputs.sh --compare DIR_A DIR_B       compare two such folders (or two runs of one scene);
+#                                                        exit 1 on a difference
 #
 # Compared: every file a run writes except images and the summary's machine-dependent keys
 # (wall time, thread counts, version). The scenes that take minutes run a shortened window
@@ -62,6 +64,8 @@ declare -A quick=(
 
 for scene in "$root"/data/scenes/*.json; do
   name=$(basename "$scene" .json)
+  # shellcheck disable=SC2053
+  [[ $name == ${3:-*} ]] || continue
   start=$(date +%s.%N)
   # shellcheck disable=SC2086
   if (cd "$root" && "$ffp" run "$scene" ${quick[$name]:-} --out "$out/$name" --force >"$out/$name.log" 2>&1); then
