@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build
   libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
-  catch2 libbenchmark-dev gnuplot-nox
+  catch2 libbenchmark-dev gnuplot-nox libcli11-dev
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
   slurm-wlm munge parallel     # sweeps on a scheduler: the one-node Slurm of the tests, GNU parallel
 )

@@ -29,20 +29,10 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-int command_bench(const Arguments& args) {
+int command_bench(const BenchOptions& options) {
   try {
-    int repeats = 3;
-    fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      if (args[i] == "--repeat" && i + 1 < args.size()) {
-        repeats = std::atoi(args[++i].c_str());
-        if (repeats < 1 || repeats > 100) throw SceneError("--repeat: must be an integer in [1, 100]");
-      } else if (args[i] == "--scenes" && i + 1 < args.size()) {
-        scenes = args[++i];
-      } else {
-        throw SceneError("ffp bench: unknown option '" + args[i] + "' (usage: ffp bench [--repeat N] [--scenes DIR])");
-      }
-    }
+    const int repeats = options.repeats;
+    const fs::path scenes = options.scenes.empty() ? default_scenes_folder() : options.scenes;
     const std::vector<std::string> candidates = {"point_triaxial_ssmc.json", "triaxial_ssmc_paper.json",
                                                  "calibration_dr15.json",    "mpm_geostatic_column.json",
                                                  "ffp_reference.json",       "cpt_reference.json"};

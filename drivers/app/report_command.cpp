@@ -42,47 +42,20 @@ std::string today() {
 
 }  // namespace
 
-int command_report(const Arguments& args) {
+int command_report(const ReportOptions& options) {
   try {
-    fs::path out = "report";
-    fs::path cache = "results/cache";
-    fs::path scenes = fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
-    std::string only;
-    bool force = false;
-    Scheduler scheduler = Scheduler::local;
+    const fs::path& out = options.out;
+    const fs::path& cache = options.cache;
+    const fs::path scenes = options.scenes.empty() ? default_scenes_folder() : options.scenes;
+    const std::string& only = options.only;
+    const bool force = options.force;
+    const Scheduler scheduler = options.slurm ? Scheduler::slurm : Scheduler::local;
     // One run per core: most runs are small or single-threaded (the MPM
     // calibration specimens), so runs side by side finish the study sooner than
     // one run at a time on two OpenMP threads (the report took 24 against 37 min
     // on a fresh clone here, with the longest runs started first).
-    int jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= args.size()) throw SceneError(a + ": needs a value");
-        return args[++i];
-      };
-      if (a == "--out") {
-        out = value();
-      } else if (a == "--cache") {
-        cache = value();
-      } else if (a == "--scenes") {
-        scenes = value();
-      } else if (a == "--force") {
-        force = true;
-      } else if (a == "--only") {
-        only = value();
-      } else if (a == "--scheduler") {
-        const std::string v = value();
-        if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
-        scheduler = v == "slurm" ? Scheduler::slurm : Scheduler::local;
-      } else if (a == "--jobs") {
-        const std::string n = value();
-        jobs = std::atoi(n.c_str());
-        if (jobs < 1 || jobs > 64) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 64]");
-      } else {
-        throw SceneError("ffp report: unknown option '" + a + "' (try ffp --help)");
-      }
-    }
+    const int jobs = options.jobs > 0 ? options.jobs
+                                      : static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
     if (!fs::is_directory(scenes)) throw SceneError("--scenes: '" + scenes.string() + "' is not a folder of scenes");
 
     // Refuse a folder of the user's before hours of runs, not after.

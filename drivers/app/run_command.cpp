@@ -26,58 +26,11 @@ namespace fs = std::filesystem;
 
 std::string version_string() { return std::string("ffp ") + FFP_VERSION; }
 
-namespace {
-
-struct SceneArguments {
-  std::string scene_file;
-  std::vector<std::string> overrides;
-  std::optional<fs::path> out;
-  bool quiet = false;
-  bool force = false;  ///< replace an --out folder that holds files ffp did not write
-  int jobs = 0;        ///< --jobs: an inverse fit's model runs at once (0: one per core)
-  bool slurm = false;  ///< --scheduler slurm: an inverse fit's model runs as Slurm job arrays
-};
-
-SceneArguments parse_scene_arguments(const Arguments& args, const char* command, bool allow_out) {
-  SceneArguments parsed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* option) -> std::string {
-      if (i + 1 >= args.size()) throw SceneError(std::string(option) + ": needs a value");
-      return args[++i];
-    };
-    if (a == "--set") {
-      parsed.overrides.push_back(value("--set"));
-    } else if (a.rfind("--set=", 0) == 0) {
-      parsed.overrides.push_back(a.substr(6));
-    } else if (allow_out && a == "--out") {
-      parsed.out = value("--out");
-    } else if (allow_out && a == "--force") {
-      parsed.force = true;
-    } else if (a == "--quiet" || a == "-q") {
-      parsed.quiet = true;
-    } else if (allow_out && a == "--jobs") {
-      const std::string n = value("--jobs");
-      char* end = nullptr;
-      const long jobs = std::strtol(n.c_str(), &end, 10);
-      if (n.empty() || *end != '\0' || jobs < 1 || jobs > 64) throw SceneError("--jobs: '" + n + "' must be an integer in [1, 64]");
-      parsed.jobs = static_cast<int>(jobs);
-    } else if (allow_out && a == "--scheduler") {
-      const std::string v = value("--scheduler");
-      if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
-      parsed.slurm = v == "slurm";
-    } else if (!a.empty() && a[0] == '-') {
-      throw SceneError(std::string("ffp ") + command + ": unknown option '" + a + "' (try ffp --help)");
-    } else if (parsed.scene_file.empty()) {
-      parsed.scene_file = a;
-    } else {
-      throw SceneError(std::string("ffp ") + command + ": one scene file at a time (got '" + parsed.scene_file +
-                       "' and '" + a + "')");
-    }
-  }
-  if (parsed.scene_file.empty()) throw SceneError(std::string("ffp ") + command + ": missing SCENE.json");
-  return parsed;
+fs::path default_scenes_folder() {
+  return fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
 }
+
+namespace {
 
 struct LoadedScene {
   std::unique_ptr<Job> job;
@@ -85,7 +38,7 @@ struct LoadedScene {
   fs::path scene_dir;
 };
 
-LoadedScene load(const SceneArguments& a) {
+LoadedScene load(const RunOptions& a) {
   json scene = load_scene_file(a.scene_file);
   for (const auto& assignment : a.overrides) apply_override(scene, assignment);
   LoadedScene loaded;
@@ -117,10 +70,9 @@ int report_error(const std::exception& e, int code) {
 
 }  // namespace
 
-int command_run(const Arguments& args) {
+int command_run(const RunOptions& a) {
   stop_with_parent_run_pool();
   try {
-    const SceneArguments a = parse_scene_arguments(args, "run", true);
     LoadedScene loaded = load(a);
     const fs::path out = a.out.value_or(fs::path("results") / loaded.echo["name"].get<std::string>());
     RunDirectory directory(out, "--out", a.force);
@@ -162,9 +114,8 @@ int command_run(const Arguments& args) {
   }
 }
 
-int command_check(const Arguments& args) {
+int command_check(const RunOptions& a) {
   try {
-    const SceneArguments a = parse_scene_arguments(args, "check", false);
     LoadedScene loaded = load(a);
     std::printf("%s: valid %s scene '%s'\n", a.scene_file.c_str(), loaded.echo["kind"].get<std::string>().c_str(),
                 loaded.echo["name"].get<std::string>().c_str());

@@ -84,56 +84,19 @@ int run_on_slurm(const fs::path& dir, std::size_t cases) {
 
 }  // namespace
 
-int command_sweep(const Arguments& args) {
+int command_sweep(const SweepOptions& options) {
   try {
-    std::string scene_file;
+    const std::string& scene_file = options.scene_file;
+    fs::path out = options.out;
+    const fs::path& emit = options.emit;
+    const int jobs = options.jobs, threads = options.threads;
+    const bool force = options.force, slurm = options.slurm;
     std::vector<SweepAxis> axes;
-    fs::path out, emit;
-    int jobs = 1, threads = 1;
-    bool force = false, slurm = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      auto value = [&]() -> std::string {
-        if (i + 1 >= args.size()) throw SceneError(a + ": needs a value");
-        return args[++i];
-      };
-      auto count = [&](int high) {
-        const std::string n = value();
-        char* end = nullptr;
-        const long v = std::strtol(n.c_str(), &end, 10);
-        if (end == n.c_str() || *end != '\0' || v < 1 || v > high)
-          throw SceneError(a + ": '" + n + "' must be an integer in [1, " + std::to_string(high) + "]");
-        return static_cast<int>(v);
-      };
-      if (a == "--set") {
-        const std::string assignment = value();
-        const auto eq = assignment.find('=');
-        if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key=v1,v2,...");
-        axes.push_back({assignment.substr(0, eq), split_values(assignment.substr(eq + 1))});
-      } else if (a == "--jobs") {
-        jobs = count(256);
-      } else if (a == "--threads") {
-        threads = count(256);
-      } else if (a == "--force") {
-        force = true;
-      } else if (a == "--out") {
-        out = value();
-      } else if (a == "--emit") {
-        emit = value();
-      } else if (a == "--scheduler") {
-        const std::string v = value();
-        if (v != "local" && v != "slurm") throw SceneError("--scheduler: '" + v + "' must be local or slurm");
-        slurm = v == "slurm";
-      } else if (!a.empty() && a[0] == '-') {
-        throw SceneError("ffp sweep: unknown option '" + a + "' (try ffp --help)");
-      } else if (scene_file.empty()) {
-        scene_file = a;
-      } else {
-        throw SceneError("ffp sweep: one scene file at a time");
-      }
+    for (const std::string& assignment : options.axes) {
+      const auto eq = assignment.find('=');
+      if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key=v1,v2,...");
+      axes.push_back({assignment.substr(0, eq), split_values(assignment.substr(eq + 1))});
     }
-    if (scene_file.empty()) throw SceneError("ffp sweep: missing SCENE.json");
-    if (axes.empty()) throw SceneError("ffp sweep: give at least one --set key=v1,v2,...");
     if (!emit.empty() && (slurm || !out.empty()))
       throw SceneError("--emit: writes the case folder only; give --out with --scheduler slurm to also submit it");
 
@@ -191,11 +154,8 @@ int command_sweep(const Arguments& args) {
   }
 }
 
-int command_collect(const Arguments& args) {
+int command_collect(const fs::path& dir) {
   try {
-    if (args.size() != 1 || args[0].empty() || args[0][0] == '-')
-      throw SceneError("ffp collect: give one folder written by ffp sweep --emit (or --scheduler slurm)");
-    const fs::path dir = args[0];
     std::vector<std::string> keys;
     const std::vector<CaseResult> cases = collect_sweep(dir, keys);
     return report_collected(dir, keys, cases);
