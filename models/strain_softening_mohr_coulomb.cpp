@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/bracketed_root.hpp"
 #include "models/principal_stress.hpp"
 
 namespace ffp {
@@ -95,24 +96,9 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance *
                             trial_values.cwiseAbs().maxCoeff();
     const double tolerance = 1e-12 * high + rounding;
-    accepted = high;
-    double residual_accepted = residual_high;
-    // Illinois regula falsi: superlinear, never leaves the bracket.
-    for (int iteration = 0; iteration < 200 && std::abs(residual_accepted) > tolerance; ++iteration) {
-      const double next = high - residual_high * (high - low) / (residual_high - residual_low);
-      const double residual_next = residual(next);
-      if ((residual_next > 0.0) != (residual_high > 0.0)) {
-        low = high;
-        residual_low = residual_high;
-      } else {
-        residual_low *= 0.5;
-      }
-      high = next;
-      residual_high = residual_next;
-      accepted = next;
-      residual_accepted = residual_next;
-      if (std::abs(high - low) <= tolerance) break;
-    }
+    accepted = illinois_root(residual, high, residual_high, low, residual_low, tolerance,
+                             [tolerance](double) { return tolerance; }, 200)
+                   .x;
   }
   state.plastic_deviatoric_strain += accepted;
   // `returned` and `region` are those of the last evaluation, at the accepted Δκ.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "models/bracketed_root.hpp"
 #include "mpm/diagnostics.hpp"
 
 namespace ffp::mpm {
@@ -99,25 +100,9 @@ double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) cons
   }
   if ((f_lo > 0.0) == (f_hi > 0.0))
     throw StepFailure("rigid penetrometer: no bracket for the contact velocity at t = " + std::to_string(s.time_s) + " s");
-  // Illinois regula falsi: exact on each linear piece of the residual, and never leaves the bracket.
-  int side = 0;
-  for (int k = 0; k < 200; ++k) {
-    const double v = hi - f_hi * (hi - lo) / (f_hi - f_lo);
-    const double f_v = residual(v);
-    if (f_v == 0.0 || hi - lo <= 1e-15 * (1.0 + std::abs(v))) return v;
-    if ((f_v > 0.0) == (f_hi > 0.0)) {
-      hi = v;
-      f_hi = f_v;
-      if (side == 1) f_lo *= 0.5;
-      side = 1;
-    } else {
-      lo = v;
-      f_lo = f_v;
-      if (side == -1) f_hi *= 0.5;
-      side = -1;
-    }
-  }
-  return std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+  // Exact on each linear piece of the residual, and never leaves the bracket.
+  const auto width = [](double v) { return 1e-15 * (1.0 + std::abs(v)); };
+  return illinois_root(residual, hi, f_hi, lo, f_lo, 0.0, width, 200).x;
 }
 
 void RigidPenetrometer::apply_contact(Simulation& s) {
