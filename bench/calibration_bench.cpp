@@ -11,20 +11,20 @@
 #include "calibration/lab_curve.hpp"
 #include "calibration/numerical_triaxial.hpp"
 #include "calibration/softening_calibration.hpp"
+#include "models/math_constants.hpp"
 
 namespace {
 
 using namespace ffp;
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 /// The scenes' materials: data/scenes/calibration_dr00.json and _dr15.json.
 StrainSofteningParameters sand(bool dense) {
   StrainSofteningParameters p;
   p.elastic = {dense ? 5e6 : 1e6, 0.33};
-  p.friction_peak_rad = (dense ? 40 : 38) * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = (dense ? 5 : 2) * kDeg;
+  p.friction_peak_rad = (dense ? 40 : 38) * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = (dense ? 5 : 2) * kDegree;
   p.softening_factor = 8;
   return p;
 }

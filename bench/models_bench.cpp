@@ -9,19 +9,19 @@
 #include "models/elastic.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
+#include "models/math_constants.hpp"
 
 namespace {
 
 using namespace ffp;
 
 constexpr std::size_t kBatch = 10000;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 MohrCoulombParameters paper_mc() {
   MohrCoulombParameters p;
   p.elastic = {2.5e6, 0.33};
-  p.friction_angle_rad = 39 * kDeg;
-  p.dilatancy_angle_rad = 5 * kDeg;
+  p.friction_angle_rad = 39 * kDegree;
+  p.dilatancy_angle_rad = 5 * kDegree;
   return p;
 }
 
@@ -102,9 +102,9 @@ void ssmc_with_rate_law(benchmark::State& bench) {
   const auto increments = shearing_increments(three_d, rng);
   StrainSofteningParameters p;
   p.elastic = paper_mc().elastic;
-  p.friction_peak_rad = 39 * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = 5 * kDeg;
+  p.friction_peak_rad = 39 * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = 5 * kDegree;
   p.softening_factor = 8;
   p.relative_density = 0.15;  // Bolton transient dilatancy as well
   p.rate.alpha_phi = 0.1;

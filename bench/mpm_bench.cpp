@@ -18,13 +18,13 @@
 #include "mpm/ffp_model.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 /// `cells` × `cells` cells filled with 2 × 2 particles in a 0.4 m × 0.4 m block
 /// (160: 102,400 particles), a few empty cells around it.

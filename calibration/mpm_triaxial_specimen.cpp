@@ -4,12 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
 #include "mpm/diagnostics.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/stages.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp {
 
@@ -41,7 +41,7 @@ struct Platens {
 
   double speed_at(double t) const {
     if (t >= ramp_s) return speed_m_s;
-    return speed_m_s * 0.5 * (1.0 - std::cos(std::numbers::pi * t / ramp_s));
+    return speed_m_s * 0.5 * (1.0 - std::cos(kPi * t / ramp_s));
   }
 
   /// The face radius of particle p: its centre plus its (stretched) half-width.
@@ -66,17 +66,17 @@ void measure_platens(Simulation& s, Platens& platens) {
   const mpm::Particles& P = s.particles;
   double r_top = platens.radius_m;
   if (!platens.rough) r_top = Platens::face_radius(P, platens.top_corner);
-  const double top_area = std::numbers::pi * r_top * r_top;
+  const double top_area = kPi * r_top * r_top;
   // The bottom platen is rough or smooth like the top; the bottom face's radius
   // under a smooth platen is not tracked, and the top's stands in for it (the
   // bottom q is a check of quasi-statics, not a result).
   double volume = 0.0;
   for (std::size_t p = 0; p < P.size(); ++p) volume += P.volume[p];
-  volume *= mpm::kTwoPi;
+  volume *= kTwoPi;
   const double axial_strain = platens.displacement_m / platens.height_m;
   const double volumetric_strain = 1.0 - volume / platens.initial_volume_m3;
   const double corrected_area =
-      std::numbers::pi * platens.radius_m * platens.radius_m * (1.0 - volumetric_strain) / (1.0 - axial_strain);
+      kPi * platens.radius_m * platens.radius_m * (1.0 - volumetric_strain) / (1.0 - axial_strain);
   const double piston = top_force - platens.cell_pressure_Pa * top_area;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t p : platens.face) {
@@ -274,7 +274,7 @@ MpmTriaxialResult run_mpm_triaxial(const mpm::MaterialLaw& law, const MpmTriaxia
       }
     }
   }
-  platens.initial_volume_m3 *= mpm::kTwoPi;
+  platens.initial_volume_m3 *= kTwoPi;
   if (platens.face.empty()) throw std::logic_error("mpm triaxial: no particle on the lateral face");
   // The constructor's step saw zero stress; the initial σ3 barely changes it, but use it.
   s.dt_limit_s = mpm::cfl_time_step_limit(s);

@@ -1,10 +1,10 @@
 #include "drivers/ffp_record.hpp"
+#include "models/math_constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 
 namespace ffp {
 
@@ -45,15 +45,15 @@ double strain_rate_factor(const RateCorrection& c, double v, double v_ref, doubl
 double TipAreas::projected_m2(double depth_m) const {
   if (depth_m <= 0.0) return 0.0;
   const double r = cone_height_m > 0.0 ? base_radius_m * std::min(depth_m, cone_height_m) / cone_height_m : base_radius_m;
-  return std::numbers::pi * r * r;
+  return kPi * r * r;
 }
 
 double TipAreas::mantle_m2(double depth_m) const {
   if (depth_m <= 0.0) return 0.0;
-  if (cone_height_m <= 0.0) return std::numbers::pi * base_radius_m * base_radius_m;
+  if (cone_height_m <= 0.0) return kPi * base_radius_m * base_radius_m;
   const double z = std::min(depth_m, cone_height_m);
   const double r = base_radius_m * z / cone_height_m;
-  return std::numbers::pi * r * std::hypot(r, z);  // lateral area of a cone of radius r and height z
+  return kPi * r * std::hypot(r, z);  // lateral area of a cone of radius r and height z
 }
 
 void check_record_channel(const std::vector<double>& t, const std::vector<double>& v, std::string_view column,
@@ -147,7 +147,7 @@ InterpretedRecord interpret_record(const std::vector<double>& t, const std::vect
     for (std::size_t k = 1; k <= k0; ++k) v -= g * 0.5 * (d[k] + d[k - 1]) * (t[k] - t[k - 1]);
   }
   out.impact_velocity_m_s = v;
-  const double frontal_m2 = std::numbers::pi * s.tip.base_radius_m * s.tip.base_radius_m;
+  const double frontal_m2 = kPi * s.tip.base_radius_m * s.tip.base_radius_m;
   const double buoyancy_N = s.medium == DropMedium::water ? s.fluid_density_kg_m3 * s.volume_m3 * g : 0.0;
   out.q_sbc_kPa.assign(s.rate_laws.size(), {});
   double z = 0.0;

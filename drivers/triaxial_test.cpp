@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "drivers/integration_study.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp {
 
-double TriaxialSpecimen::area_m2() const { return 0.25 * std::numbers::pi * diameter_m * diameter_m; }
+double TriaxialSpecimen::area_m2() const { return 0.25 * kPi * diameter_m * diameter_m; }
 double TriaxialSpecimen::volume_m3() const { return area_m2() * height_m; }
 
 namespace {

@@ -3,11 +3,10 @@
 /// in particle order so that they are reproducible bit for bit.
 #include <vector>
 
+#include "models/math_constants.hpp"
 #include "mpm/simulation.hpp"
 
 namespace ffp::mpm {
-
-inline constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 struct Diagnostics {
   double mass_kg = 0.0;

@@ -1,12 +1,12 @@
 #include "mpm/penetrometer_geometry.hpp"
+#include "models/math_constants.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace ffp::mpm {
 
-bool PenetrometerShape::flat_tip() const { return cone_apex_angle_rad >= std::numbers::pi; }
+bool PenetrometerShape::flat_tip() const { return cone_apex_angle_rad >= kPi; }
 
 double PenetrometerShape::cone_height_m() const {
   return flat_tip() ? 0.0 : base_radius_m / std::tan(0.5 * cone_apex_angle_rad);
@@ -21,7 +21,7 @@ double PenetrometerShape::volume_m3() const {
   double v = 0.0;
   for (int i = 0; i < n; ++i) {
     const double r = g.radius_at((i + 0.5) * length / n);
-    v += std::numbers::pi * r * r;
+    v += kPi * r * r;
   }
   return v * length / n;
 }

@@ -53,6 +53,7 @@
 #include "mpm/diagnostics.hpp"
 #include "mpm/parallel.hpp"
 #include "reports/plot.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp {
 
@@ -203,7 +204,7 @@ void PenetrometerJob::run(RunContext& context) {
   for (const char* c : {"reaction_N", "contact_nodes", "soil_kinetic_energy_J", "dt_s", "impulse_N_s", "soil_intrusion_m"})
     columns.emplace_back(c);
   // The reaction over the base area πR²: a cone's q_c (shaft friction included), a punch's mean pressure.
-  const double base_area_m2 = std::numbers::pi * std::pow(scene_.model.shape.base_radius_m, 2);
+  const double base_area_m2 = kPi * std::pow(scene_.model.shape.base_radius_m, 2);
   if (cpt()) columns.emplace_back("mean_pressure_kPa");
   CsvTable history(columns);
   std::vector<double> t_row, depth_row, velocity_row, deceleration_row, reaction_row, impulse_row;

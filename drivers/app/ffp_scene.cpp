@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "drivers/scene/material_scene.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp {
 
@@ -61,7 +62,7 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
   // A flat tip is the rigid circular punch of the bearing-capacity benchmarks (punch_smooth/rough.json).
   if (f.choice("tip", {"cone", "flat"}, "cone") == "flat") {
     if (f.has("cone_apex_angle_deg")) f.fail("cone_apex_angle_deg", "a flat tip has no cone (give tip: cone for one)");
-    shape.cone_apex_angle_rad = std::numbers::pi;
+    shape.cone_apex_angle_rad = kPi;
   } else {
     shape.cone_apex_angle_rad = f.number("cone_apex_angle_deg", Range::open(0.0, 180.0, "degrees"), 60.0) * kDegree;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "drivers/scene/material_scene.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp {
 
@@ -159,7 +160,7 @@ MpmScene read_mpm_scene(SceneReader& scene) {
     if (!(p.z_max_m > p.z_min_m)) l.fail("z_max_m", "must be greater than z_min_m");
     // A smooth (half-cosine) ramp excites the lowest modes the least.
     p.pressure_Pa = [pressure, ramp](double t) {
-      return t >= ramp ? pressure : pressure * 0.5 * (1.0 - std::cos(3.14159265358979323846 * t / ramp));
+      return t >= ramp ? pressure : pressure * 0.5 * (1.0 - std::cos(kPi * t / ramp));
     };
     l.finish("a surface pressure (side, pressure_kPa, ramp_time_s, z_min_m, z_max_m)");
     model.pressures.push_back(std::move(p));

@@ -17,6 +17,7 @@
 #include "models/material_law.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
+#include "models/math_constants.hpp"  // kDegree: scenes give angles in degrees
 
 namespace ffp {
 
@@ -35,7 +36,5 @@ enum class DensityRule { not_used, required };
 
 /// Reads and validates a material object (reader positioned on it); finish()es it.
 MaterialSpec read_material(SceneReader& material, DensityRule density);
-
-inline constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 }  // namespace ffp

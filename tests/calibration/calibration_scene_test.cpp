@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/scratch.hpp"
+#include "models/math_constants.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -75,7 +76,7 @@ TEST_CASE("calibration scene: the curve criterion and the peak friction from the
   CHECK(s["phi_peak_from_lab_peak"].get<bool>());
   // N = 1 + q_peak/σ3 with the lab's peak 6.2033 kPa.
   const double n = 1.0 + 6.2033 / 1.72;
-  CHECK(s["phi_peak_deg"].get<double>() == Approx(std::asin((n - 1) / (n + 1)) * 180 / 3.14159265358979323846).epsilon(1e-9));
+  CHECK(s["phi_peak_deg"].get<double>() == Approx(std::asin((n - 1) / (n + 1)) / ffp::kDegree).epsilon(1e-9));
   // The model's peak is the lab's, less the softening inside the increment that
   // yields (O(η Δε_a), ~0.1 % at 1000 increments).
   CHECK(s["peak_q_kPa"].get<double>() < 6.2033);

@@ -11,6 +11,7 @@
 #include "calibration/lab_curve.hpp"
 #include "drivers/scene/scene_error.hpp"
 #include "tests/support/scratch.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
@@ -47,7 +48,7 @@ TEST_CASE("the reconstructed lab curves load in SI units", "[calibration][lab]")
     CHECK(c.axial_strain.back() == Approx(0.2));
     CHECK(c.volumetric_strain.size() == 49);
     // Peaks from data/lab/README.md: σ3 (Nφ − 1) for φ'_p = 38° and 40°, with ±1 % noise.
-    const double s = std::sin((std::string(name) == "triaxial_dr00.csv" ? 38.0 : 40.0) * 3.14159265358979323846 / 180);
+    const double s = std::sin((std::string(name) == "triaxial_dr00.csv" ? 38.0 : 40.0) * kDegree);
     CHECK(c.peak_q_Pa() == Approx(1720.0 * ((1 + s) / (1 - s) - 1)).epsilon(0.01));
   }
 }

@@ -15,6 +15,7 @@
 #include "calibration/mpm_triaxial_specimen.hpp"
 #include "calibration/softening_calibration.hpp"
 #include "tests/support/scratch.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
@@ -30,15 +31,14 @@ struct Scratch : ffp::test_support::Scratch {
 using ffp::test_support::run_ffp;
 using ffp::test_support::read_text;
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 /// The dr15 sand of data/scenes/calibration_dr15.json.
 StrainSofteningParameters dr15_sand(double eta) {
   StrainSofteningParameters p;
   p.elastic = {5e6, 0.33};
-  p.friction_peak_rad = 40.0 * kDeg;
-  p.friction_residual_rad = 32.0 * kDeg;
-  p.dilatancy_peak_rad = 5.0 * kDeg;
+  p.friction_peak_rad = 40.0 * kDegree;
+  p.friction_residual_rad = 32.0 * kDegree;
+  p.dilatancy_peak_rad = 5.0 * kDegree;
   p.softening_factor = eta;
   return p;
 }
@@ -63,7 +63,7 @@ TEST_CASE("MPM specimen, Mohr-Coulomb at 2 cm: drained triaxial peak equals sigm
   // form applies (rough ones add end restraint). ψ = 0, φ = 40°, σ3 = 1.72 kPa.
   MohrCoulombParameters mc;
   mc.elastic = {5e6, 0.33};
-  mc.friction_angle_rad = 40.0 * kDeg;
+  mc.friction_angle_rad = 40.0 * kDegree;
   MpmTriaxialConfig c = two_cm();
   c.platens = PlatenFriction::smooth;
   c.axial_strain_max = 0.03;

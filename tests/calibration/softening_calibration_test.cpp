@@ -14,19 +14,19 @@
 #include "calibration/lab_curve.hpp"
 #include "calibration/numerical_triaxial.hpp"
 #include "calibration/softening_calibration.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 StrainSofteningParameters ssmc(double E_kPa, double phi_peak_deg, double psi_peak_deg) {
   StrainSofteningParameters p;
   p.elastic = {1e3 * E_kPa, 0.33};
-  p.friction_peak_rad = phi_peak_deg * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = psi_peak_deg * kDeg;
+  p.friction_peak_rad = phi_peak_deg * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = psi_peak_deg * kDegree;
   p.softening_factor = 8;
   return p;
 }
@@ -255,9 +255,9 @@ TEST_CASE("a numerical triaxial short of the lab's range, or failing otherwise, 
 
 TEST_CASE("φ'_p from the lab peak inverts q_peak = σ3 (Nφ − 1)", "[calibration][friction]") {
   for (double phi : {30.0, 38.0, 40.0, 45.0}) {
-    const double s = std::sin(phi * kDeg);
+    const double s = std::sin(phi * kDegree);
     const double q = 1720.0 * ((1 + s) / (1 - s) - 1);
-    CHECK(peak_friction_from_peak_q(q, 1720.0) / kDeg == Approx(phi).epsilon(1e-12));
+    CHECK(peak_friction_from_peak_q(q, 1720.0) / kDegree == Approx(phi).epsilon(1e-12));
   }
   CHECK_THROWS_AS(peak_friction_from_peak_q(0.0, 1720.0), std::invalid_argument);
 }

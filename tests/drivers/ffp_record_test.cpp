@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 
 #include "drivers/ffp_record.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 
@@ -63,16 +63,16 @@ TEST_CASE("the impact is the start of the rise that first exceeds the threshold"
 }
 
 TEST_CASE("contact areas of a 60 degree cone and of a flat tip", "[record]") {
-  TipAreas cone{0.04375, 0.04375 / std::tan(std::numbers::pi / 6)};
+  TipAreas cone{0.04375, 0.04375 / std::tan(kPi / 6)};
   const double z = 0.03, r = 0.04375 * z / cone.cone_height_m;
-  CHECK(cone.projected_m2(z) == Approx(std::numbers::pi * r * r));
+  CHECK(cone.projected_m2(z) == Approx(kPi * r * r));
   // A 60° cone's slant is twice its radius, so the lateral area is 2 π r².
-  CHECK(cone.mantle_m2(z) == Approx(2 * std::numbers::pi * r * r));
-  CHECK(cone.projected_m2(0.5) == Approx(std::numbers::pi * 0.04375 * 0.04375));  // capped at the base
+  CHECK(cone.mantle_m2(z) == Approx(2 * kPi * r * r));
+  CHECK(cone.projected_m2(0.5) == Approx(kPi * 0.04375 * 0.04375));  // capped at the base
   CHECK(cone.projected_m2(0.0) == 0.0);
   TipAreas flat{0.05, 0.0};
-  CHECK(flat.projected_m2(1e-4) == Approx(std::numbers::pi * 0.0025));
-  CHECK(flat.mantle_m2(1e-4) == Approx(std::numbers::pi * 0.0025));
+  CHECK(flat.projected_m2(1e-4) == Approx(kPi * 0.0025));
+  CHECK(flat.mantle_m2(1e-4) == Approx(kPi * 0.0025));
 }
 
 TEST_CASE("strain-rate factors at ten times the reference velocity and below it", "[record]") {

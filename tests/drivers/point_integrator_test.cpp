@@ -4,15 +4,15 @@
 
 #include "drivers/integration_study.hpp"
 #include "drivers/point_integrator.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 double n_phi(double phi_deg) {
-  const double s = std::sin(phi_deg * kDeg);
+  const double s = std::sin(phi_deg * kDegree);
   return (1 + s) / (1 - s);
 }
 
@@ -21,17 +21,17 @@ double n_phi(double phi_deg) {
 MohrCoulombParameters sand_mc(double phi_deg, double psi_deg = 5.0, double cell_kPa = 1.72) {
   MohrCoulombParameters p;
   p.elastic = {2.5e6 * cell_kPa / 1.72, 0.33};
-  p.friction_angle_rad = phi_deg * kDeg;
-  p.dilatancy_angle_rad = psi_deg * kDeg;
+  p.friction_angle_rad = phi_deg * kDegree;
+  p.dilatancy_angle_rad = psi_deg * kDegree;
   return p;
 }
 
 StrainSofteningParameters sand_ssmc(double eta) {
   StrainSofteningParameters p;
   p.elastic = {2.5e6, 0.33};
-  p.friction_peak_rad = 39 * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = 5 * kDeg;
+  p.friction_peak_rad = 39 * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = 5 * kDegree;
   p.softening_factor = eta;
   return p;
 }
@@ -111,7 +111,7 @@ TEST_CASE("drained triaxial plastic flow: dε_v/dε_a = −2 sinψ/(1 − sinψ)
     const PointRecord& b = h.records.back();
     // At failure the stress no longer changes, so the strain increment is all plastic.
     const double ratio = trace(b.strain - a.strain) / (b.strain[1] - a.strain[1]);
-    const double s = std::sin(psi * kDeg);
+    const double s = std::sin(psi * kDegree);
     CHECK(ratio == Approx(-2 * s / (1 - s)).margin(1e-8));
   }
 }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/scratch.hpp"
+#include "models/math_constants.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -40,7 +41,7 @@ json table_path_scene(const std::string& name, const std::string& csv) {
 constexpr const char* kTableHeader = "time_s,stress_11_kPa,strain_22,stress_33_kPa,strain_12,strain_23,strain_13\n";
 
 double n_phi(double phi_deg) {
-  const double s = std::sin(phi_deg * 3.14159265358979323846 / 180.0);
+  const double s = std::sin(phi_deg * ffp::kDegree);
   return (1 + s) / (1 - s);
 }
 

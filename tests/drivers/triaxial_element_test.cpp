@@ -6,32 +6,32 @@
 #include <catch2/catch.hpp>
 
 #include "drivers/triaxial_test.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 double n_phi(double phi_deg) {
-  const double s = std::sin(phi_deg * kDeg);
+  const double s = std::sin(phi_deg * kDegree);
   return (1 + s) / (1 - s);
 }
 
 MohrCoulombParameters sand_mc(double phi_deg, double psi_deg, double E_Pa = 2.5e6) {
   MohrCoulombParameters p;
   p.elastic = {E_Pa, 0.33};
-  p.friction_angle_rad = phi_deg * kDeg;
-  p.dilatancy_angle_rad = psi_deg * kDeg;
+  p.friction_angle_rad = phi_deg * kDegree;
+  p.dilatancy_angle_rad = psi_deg * kDegree;
   return p;
 }
 
 StrainSofteningParameters sand_ssmc(double eta, double psi_deg = 5.0) {
   StrainSofteningParameters p;
   p.elastic = {2.5e6, 0.33};
-  p.friction_peak_rad = 39 * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = psi_deg * kDeg;
+  p.friction_peak_rad = 39 * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = psi_deg * kDegree;
   p.softening_factor = eta;
   return p;
 }
@@ -91,7 +91,7 @@ TEST_CASE("force–displacement area of elastic–perfectly plastic MC equals th
       // F and δ are q·A and ε_a·H of the same specimen.
       CHECK(r.axial_force_N.back() == Approx(q_f * c.specimen.area_m2()).epsilon(1e-9));
       CHECK(r.axial_displacement_m.back() == Approx(eps_max * 0.15).epsilon(1e-12));
-      CHECK(c.specimen.area_m2() == Approx(3.14159265358979323846 * 0.035 * 0.035).epsilon(1e-15));
+      CHECK(c.specimen.area_m2() == Approx(kPi * 0.035 * 0.035).epsilon(1e-15));
     }
   }
 }
@@ -121,7 +121,7 @@ TEST_CASE("piston work equals plastic work + stored elastic energy − cell pres
     CHECK(std::abs(r.plastic_work_J_total) <= 1e-12 * r.dissipated_work_J_total);
     CHECK(r.dissipated_work_J_total == Approx(r.elastic_energy_change_J - r.cell_work_J).epsilon(1e-9));
     // Drained elastic triaxial: W = V E ε²/2 for q = E ε_a.
-    CHECK(r.dissipated_work_J_total == Approx(0.5 * 2.5e6 * 1e-4 * 0.15 * 3.14159265358979323846 * 0.035 * 0.035)
+    CHECK(r.dissipated_work_J_total == Approx(0.5 * 2.5e6 * 1e-4 * 0.15 * kPi * 0.035 * 0.035)
                                            .epsilon(1e-9));
   }
 }

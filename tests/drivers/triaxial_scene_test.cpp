@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/scratch.hpp"
+#include "models/math_constants.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -27,7 +28,7 @@ using ffp::test_support::run_ffp;
 using ffp::test_support::read_text;
 
 double n_phi(double phi_deg) {
-  const double s = std::sin(phi_deg * 3.14159265358979323846 / 180.0);
+  const double s = std::sin(phi_deg * ffp::kDegree);
   return (1 + s) / (1 - s);
 }
 

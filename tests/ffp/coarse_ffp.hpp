@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "mpm/ffp_model.hpp"
+#include "models/math_constants.hpp"
 
 namespace ffp::test {
 
-inline constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 inline mpm::FfpDescription coarse_ffp() {
   mpm::FfpDescription d;

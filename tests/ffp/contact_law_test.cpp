@@ -6,17 +6,20 @@
 #include <cmath>
 
 #include "mpm/contact_law.hpp"
+#include "models/math_constants.hpp"
 
 using ffp::mpm::contact_velocity;
 using ffp::mpm::ContactLaw;
 using ffp::mpm::Vector2;
+using ffp::kDegree;
+using ffp::kPi;
 
 namespace {
 constexpr double kExact = 1e-14;  // a handful of flops: round-off only
-const double kMu = std::tan(20.0 * 3.14159265358979323846 / 180.0);
+const double kMu = std::tan(20.0 * kDegree);
 // The cone flank's outward normal (60° apex) and its tangent.
-const Vector2 kNormal{std::cos(3.14159265358979323846 / 6), -std::sin(3.14159265358979323846 / 6)};
-const Vector2 kTangent{std::sin(3.14159265358979323846 / 6), std::cos(3.14159265358979323846 / 6)};
+const Vector2 kNormal{std::cos(kPi / 6), -std::sin(kPi / 6)};
+const Vector2 kTangent{std::sin(kPi / 6), std::cos(kPi / 6)};
 
 Vector2 combine(double normal, double tangential, Vector2 base = {}) {
   return {base.r + normal * kNormal.r + tangential * kTangent.r, base.z + normal * kNormal.z + tangential * kTangent.z};

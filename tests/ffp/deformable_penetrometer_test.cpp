@@ -9,13 +9,13 @@
 
 #include "mpm/diagnostics.hpp"
 #include "mpm/ffp_model.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 FfpDescription coarse(std::optional<double> modulus_Pa) {
   FfpDescription d;

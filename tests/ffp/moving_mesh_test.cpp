@@ -9,6 +9,7 @@
 #include "mpm/ffp_model.hpp"
 #include "mpm/moving_mesh.hpp"
 #include "mpm/simulation.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
@@ -83,11 +84,11 @@ TEST_CASE("FFP grid: tip_offset_cells puts the tip that far between two node row
 TEST_CASE("FFP run: the moving band follows the rigid penetrometer and no particle leaves the grid",
           "[ffp][moving_mesh]") {
   FfpDescription d;
-  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * 3.14159265358979 / 180, 0, 0});
+  d.soil.law = MohrCoulomb(MohrCoulombParameters{ElasticConstants{2.5e6, 0.33}, 39.0 * kDegree, 0, 0});
   d.mesh.min_cell_m = 0.02;
   d.mesh.max_cell_m = 0.06;
   d.mesh.below_cell_m = 0.04;
-  d.contact.friction = std::tan(20.0 * 3.14159265358979 / 180);
+  d.contact.friction = std::tan(20.0 * kDegree);
   FfpRun run(d);
   Simulation& s = run.simulation();
   const int band = run.layout().band_first + 3;

@@ -3,12 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 
 #include "mpm/penetrometer_geometry.hpp"
+#include "models/math_constants.hpp"
 
 using ffp::mpm::PenetrometerGeometry;
 using ffp::mpm::PenetrometerShape;
+using ffp::kPi;
 
 namespace {
 PenetrometerShape blue_drop() { return PenetrometerShape{}; }  // 60° cone, R = 4.375 cm
@@ -29,7 +30,7 @@ TEST_CASE("a point on the axis below the tip is its distance away with a downwar
 
 TEST_CASE("a point off the cone flank has the flank's outward normal", "[ffp][geometry]") {
   const PenetrometerGeometry g(blue_drop());
-  const double half = std::numbers::pi / 6;
+  const double half = kPi / 6;
   // Foot point on the flank at 3 cm along it, pushed 5 mm outward.
   const double s = 0.03, offset = 0.005;
   const double r = s * std::sin(half) + offset * std::cos(half);
@@ -67,7 +68,7 @@ TEST_CASE("the rounded edge is a smooth arc between cone and body", "[ffp][geome
   // the sharp body and the body without the fillet's corner region.
   PenetrometerShape sharp = s;
   sharp.edge_radius_m = 0.0;
-  const double sharp_volume = std::numbers::pi * s.base_radius_m * s.base_radius_m *
+  const double sharp_volume = kPi * s.base_radius_m * s.base_radius_m *
                               (s.body_length_m + s.cone_height_m() / 3.0);
   CHECK(sharp.volume_m3() == Approx(sharp_volume).epsilon(1e-6));
   CHECK(s.volume_m3() < sharp_volume);
@@ -87,7 +88,7 @@ TEST_CASE("inside and outside agree with the outline radius", "[ffp][geometry]")
 TEST_CASE("a flat tip (apex 180°) is a disc: no cone, a downward normal below it, the body's full radius at once",
           "[ffp][geometry][punch]") {
   PenetrometerShape punch;
-  punch.cone_apex_angle_rad = std::numbers::pi;
+  punch.cone_apex_angle_rad = kPi;
   punch.base_radius_m = 0.05;
   punch.edge_radius_m = 0.0;
   punch.body_length_m = 0.1;
@@ -104,5 +105,5 @@ TEST_CASE("a flat tip (apex 180°) is a disc: no cone, a downward normal below i
   }
   CHECK(g.contains(0.03, 0.001, 0.0));
   CHECK_FALSE(g.contains(0.051, 0.001, 0.0));
-  CHECK(punch.volume_m3() == Approx(std::numbers::pi * 0.05 * 0.05 * 0.1).epsilon(1e-6));
+  CHECK(punch.volume_m3() == Approx(kPi * 0.05 * 0.05 * 0.1).epsilon(1e-6));
 }

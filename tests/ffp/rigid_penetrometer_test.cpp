@@ -17,7 +17,6 @@
 using namespace ffp;
 using namespace ffp::mpm;
 using ffp::test::coarse_ffp;
-using ffp::test::kDegree;
 
 namespace {
 

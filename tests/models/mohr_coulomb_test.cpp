@@ -8,20 +8,20 @@
 #include "models/mohr_coulomb.hpp"
 #include "models/principal_stress.hpp"
 #include "tensor_test_helpers.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::test;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 MohrCoulombParameters sand(double phi_deg = 39.0, double psi_deg = 5.0, double cohesion_Pa = 0.0, double nu = 0.33,
                            double E_Pa = 2.5e6) {
   MohrCoulombParameters p;
   p.elastic = {E_Pa, nu};
-  p.friction_angle_rad = phi_deg * kDeg;
-  p.dilatancy_angle_rad = psi_deg * kDeg;
+  p.friction_angle_rad = phi_deg * kDegree;
+  p.dilatancy_angle_rad = psi_deg * kDegree;
   p.cohesion_Pa = cohesion_Pa;
   return p;
 }
@@ -41,7 +41,7 @@ Voigt triaxial(double radial_kPa, double axial_kPa) {
 }
 
 double flow_factor_nphi(double phi_deg) {
-  const double s = std::sin(phi_deg * kDeg);
+  const double s = std::sin(phi_deg * kDegree);
   return (1 + s) / (1 - s);
 }
 
@@ -72,7 +72,7 @@ TEST_CASE("plane return: plastic strain follows g with no flow along σ2", "[mc]
   const Eigen::Vector3d e = PrincipalStresses(ep).values();
   // g = (σ1 − σ3) + (σ1 + σ3) sin ψ: Δε^p = Δλ (1 + sin ψ, 0, −(1 − sin ψ)).
   // Tolerance: Δε^p is the difference of O(1e-3) strains, rounding ~1e-16 of them.
-  const double sp = std::sin(psi * kDeg);
+  const double sp = std::sin(psi * kDegree);
   CHECK(std::abs(e[1]) <= 1e-12);
   CHECK(e[0] / -e[2] == Approx((1 + sp) / (1 - sp)).epsilon(1e-9));
   CHECK(std::abs(mc.yield_function(stress)) <= 1e-10 * 250e3);
@@ -88,7 +88,7 @@ TEST_CASE("triaxial compression edge: dε_v^p/dε_1^p = −2 sinψ/(1 − sinψ)
     increment << 0.5e-3, -1e-3, 0.5e-3, 0, 0, 0;  // isochoric axial compression
     REQUIRE(mc.update(stress, increment) == ReturnRegion::edge_compression);
     const Voigt ep = plastic_strain(mc.parameters().elastic, increment, stress - start);
-    const double sp = std::sin(psi * kDeg);
+    const double sp = std::sin(psi * kDegree);
     // The ratio of O(1e-3) strains; 1e-9 relative leaves room for the cancellation in Δε − CΔσ.
     CHECK(trace(ep) / ep[1] == Approx(-2 * sp / (1 - sp)).margin(1e-9));
     CHECK(ep[0] == Approx(ep[2]).margin(1e-15));
@@ -106,7 +106,7 @@ TEST_CASE("triaxial extension edge: dε_v^p/dε_1^p = 2 sinψ/(1 + sinψ)", "[mc
   increment << -0.5e-3, 1e-3, -0.5e-3, 0, 0, 0;  // isochoric axial extension
   REQUIRE(mc.update(stress, increment) == ReturnRegion::edge_extension);
   const Voigt ep = plastic_strain(mc.parameters().elastic, increment, stress - start);
-  const double sp = std::sin(psi * kDeg);
+  const double sp = std::sin(psi * kDegree);
   CHECK(trace(ep) / ep[1] == Approx(2 * sp / (1 + sp)).margin(1e-9));
   CHECK(std::abs(mc.yield_function(stress)) <= 1e-10 * 1e3 * radial);
 }
@@ -132,7 +132,7 @@ TEST_CASE("tensile increments on c' = 0 sand return to zero stress", "[mc][apex]
     const MohrCoulomb mc(sand(30.0, 0.0, 10e3));
     Voigt stress = isotropic(-10e3);
     CHECK(mc.update(stress, isotropic(0.1)) == ReturnRegion::apex);
-    CHECK(max_abs(stress - isotropic(10e3 / std::tan(30 * kDeg))) <= 1e-9);
+    CHECK(max_abs(stress - isotropic(10e3 / std::tan(30 * kDegree))) <= 1e-9);
   }
 }
 

@@ -8,21 +8,21 @@
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
 #include "tensor_test_helpers.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::test;
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 /// The paper's sand (section 4.2, Table 1): E' = 2500 kPa, ν' = 0.33, φ'_p = 39°, φ'_c = 32°, ψ_p = 5°, η = 8.
 StrainSofteningParameters paper_sand() {
   StrainSofteningParameters p;
   p.elastic = {2.5e6, 0.33};
-  p.friction_peak_rad = 39 * kDeg;
-  p.friction_residual_rad = 32 * kDeg;
-  p.dilatancy_peak_rad = 5 * kDeg;
+  p.friction_peak_rad = 39 * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = 5 * kDegree;
   p.softening_factor = 8.0;
   return p;
 }
@@ -52,7 +52,7 @@ TEST_CASE("Bolton dilatancy index and peak dilatancy match table values, clampin
   for (const Row& r : table) {
     CAPTURE(r.relative_density, r.p_kPa);
     CHECK(bolton_dilatancy_index(r.relative_density, r.p_kPa) == Approx(r.index).margin(1e-8));
-    CHECK(bolton_peak_dilatancy_rad(r.relative_density, r.p_kPa) / kDeg == Approx(r.psi_deg).margin(1e-2));
+    CHECK(bolton_peak_dilatancy_rad(r.relative_density, r.p_kPa) / kDegree == Approx(r.psi_deg).margin(1e-2));
   }
 }
 
@@ -60,8 +60,8 @@ TEST_CASE("the rate law is monotone in ε̇ and inert below ε̇_ref", "[rate]")
   FrictionRateLaw law;
   law.alpha_phi = 0.05;
   law.reference_strain_rate_per_s = 1e-3;
-  law.max_friction_angle_rad = 60 * kDeg;
-  const double peak = 39 * kDeg;
+  law.max_friction_angle_rad = 60 * kDegree;
+  const double peak = 39 * kDegree;
   CHECK(law.peak_friction_rad(peak, 0.0) == peak);
   CHECK(law.peak_friction_rad(peak, 1e-9) == peak);
   CHECK(law.peak_friction_rad(peak, 1e-3) == peak);
@@ -71,10 +71,10 @@ TEST_CASE("the rate law is monotone in ε̇ and inert below ε̇_ref", "[rate]")
   for (double rate = 1e-6; rate < 1e6; rate *= 1.7) {
     const double phi = law.peak_friction_rad(peak, rate);
     CHECK(phi >= previous);
-    CHECK(phi <= 60 * kDeg);
+    CHECK(phi <= 60 * kDegree);
     previous = phi;
   }
-  CHECK(law.peak_friction_rad(peak, 1e30) == 60 * kDeg);  // capped
+  CHECK(law.peak_friction_rad(peak, 1e30) == 60 * kDegree);  // capped
   law.alpha_phi = 0.0;
   CHECK(law.peak_friction_rad(peak, 1e6) == peak);  // α_φ = 0: rate independent
 }
@@ -97,17 +97,17 @@ TEST_CASE("SSMC strength decays as x_r + (x_p − x_r) exp(−η ε_d^p)", "[ssm
   const StrainSofteningMohrCoulomb law(p);
   StrainSofteningMohrCoulomb::State state;
   MohrCoulombParameters s = law.current_strength(state, 1.72e3);
-  CHECK(s.friction_angle_rad == Approx(39 * kDeg).epsilon(1e-14));
-  CHECK(s.dilatancy_angle_rad == Approx(5 * kDeg).epsilon(1e-13));
+  CHECK(s.friction_angle_rad == Approx(39 * kDegree).epsilon(1e-14));
+  CHECK(s.dilatancy_angle_rad == Approx(5 * kDegree).epsilon(1e-13));
   CHECK(s.cohesion_Pa == Approx(5e3).epsilon(1e-14));
   state.plastic_deviatoric_strain = 1.0 / 8.0;
   s = law.current_strength(state, 1.72e3);
-  CHECK(s.friction_angle_rad == Approx((32 + 7 * std::exp(-1.0)) * kDeg).epsilon(1e-13));
+  CHECK(s.friction_angle_rad == Approx((32 + 7 * std::exp(-1.0)) * kDegree).epsilon(1e-13));
   CHECK(s.cohesion_Pa == Approx(1e3 + 4e3 * std::exp(-1.0)).epsilon(1e-13));
-  CHECK(s.dilatancy_angle_rad == Approx(5 * std::exp(-1.0) * kDeg).epsilon(1e-12));
+  CHECK(s.dilatancy_angle_rad == Approx(5 * std::exp(-1.0) * kDegree).epsilon(1e-12));
   state.plastic_deviatoric_strain = 10.0;
   s = law.current_strength(state, 1.72e3);
-  CHECK(s.friction_angle_rad == Approx(32 * kDeg).epsilon(1e-14));
+  CHECK(s.friction_angle_rad == Approx(32 * kDegree).epsilon(1e-14));
   CHECK(s.dilatancy_angle_rad == Approx(0.0).margin(1e-30));
 }
 
@@ -116,7 +116,7 @@ TEST_CASE("Bolton's ψ_p is capped at the current friction angle", "[ssmc][bolto
   p.relative_density = 1.0;  // I_R clamped to 4: ψ_p = 50.2° > φ
   const StrainSofteningMohrCoulomb law(p);
   StrainSofteningMohrCoulomb::State state;
-  CHECK(law.current_strength(state, 1e3).dilatancy_angle_rad == Approx(39 * kDeg).epsilon(1e-12));
+  CHECK(law.current_strength(state, 1e3).dilatancy_angle_rad == Approx(39 * kDegree).epsilon(1e-12));
   // Early in softening ψ = 50.19° e^(−ηκ) still exceeds φ = 32° + 7° e^(−ηκ): capped.
   state.plastic_deviatoric_strain = 0.01;
   MohrCoulombParameters s = law.current_strength(state, 1e3);
@@ -132,12 +132,12 @@ TEST_CASE("Bolton's ψ_p is capped at the current friction angle", "[ssmc][bolto
 TEST_CASE("ψ never grows with softening, even where Bolton's ψ_p is below ψ_r", "[ssmc][bolton]") {
   StrainSofteningParameters p = paper_sand();
   p.relative_density = 0.15;
-  p.dilatancy_residual_rad = 2 * kDeg;
+  p.dilatancy_residual_rad = 2 * kDegree;
   const StrainSofteningMohrCoulomb law(p);
   StrainSofteningMohrCoulomb::State state;
   // At 1.72 kPa I_R = 0.15(10 − ln 1.72) − 1 = 0.42: ψ_p = 7.2° > ψ_r, the usual decay to 2°.
   const double low_p_peak = bolton_peak_dilatancy_rad(0.15, 1.72);
-  REQUIRE(low_p_peak > 2 * kDeg);
+  REQUIRE(low_p_peak > 2 * kDegree);
   CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad == Approx(low_p_peak).epsilon(1e-12));
   // At 100 kPa I_R = 0.15(10 − ln 100) − 1 < 0 is clamped to 0: ψ_p = 0 < ψ_r, and ψ stays 0.
   REQUIRE(bolton_peak_dilatancy_rad(0.15, 100.0) == 0.0);
@@ -148,7 +148,7 @@ TEST_CASE("ψ never grows with softening, even where Bolton's ψ_p is below ψ_r
     CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad <= low_p_peak * (1 + 1e-12));
   }
   state.plastic_deviatoric_strain = 5.0;
-  CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad == Approx(2 * kDeg).epsilon(1e-12));
+  CHECK(law.current_strength(state, 1.72e3).dilatancy_angle_rad == Approx(2 * kDegree).epsilon(1e-12));
 }
 
 TEST_CASE("SSMC with η = 0 is Mohr-Coulomb with the peak strength", "[ssmc]") {
@@ -239,7 +239,7 @@ TEST_CASE("SSMC randomized sweep stays finite and admissible", "[ssmc][sweep]") 
   long violations = 0, not_finite = 0;
   for (int n = 0; n < 20000; ++n) {
     StrainSofteningParameters p = paper_sand();
-    p.friction_peak_rad = (1.0 + 69.0 * uniform(rng)) * kDeg;
+    p.friction_peak_rad = (1.0 + 69.0 * uniform(rng)) * kDegree;
     p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
     p.dilatancy_peak_rad = n % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
     p.cohesion_peak_Pa = n % 2 == 0 ? 0.0 : 5e3 * uniform(rng);

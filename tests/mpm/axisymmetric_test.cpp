@@ -6,13 +6,13 @@
 
 #include "mpm/simulation.hpp"
 #include "mpm_test_support.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// A pressure ramped smoothly (half cosine) to p over `ramp`, then held.
 std::function<double(double)> ramp(double p, double duration) {

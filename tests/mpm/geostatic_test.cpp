@@ -6,6 +6,7 @@
 #include "mpm/diagnostics.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm_test_support.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
@@ -64,7 +65,7 @@ TEST_CASE("geostatic K0 column stays at sigma'_v = gamma z, sigma'_h = K0 sigma'
   SECTION("GIMP, linear elastic") { check(ShapeFunction::gimp, LinearElastic(e)); }
   SECTION("linear, linear elastic") { check(ShapeFunction::linear, LinearElastic(e)); }
   SECTION("GIMP, Mohr-Coulomb (phi' = 39°, K0 inside the yield surface)") {
-    check(ShapeFunction::gimp, MohrCoulomb(MohrCoulombParameters{e, 39.0 * 3.14159265358979 / 180.0, 0.0, 0.0}));
+    check(ShapeFunction::gimp, MohrCoulomb(MohrCoulombParameters{e, 39.0 * kDegree, 0.0, 0.0}));
   }
 }
 

@@ -3,12 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 
 #include "models/mohr_coulomb.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/stages.hpp"
 #include "mpm_test_support.hpp"
+#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
@@ -16,7 +16,7 @@ using namespace ffp::mpm;
 namespace {
 
 constexpr double kDensity = 1500.0;
-const MohrCoulombParameters kSand{ElasticConstants{2.5e6, 0.33}, 39.0 * std::numbers::pi / 180.0, 0.0, 0.0};
+const MohrCoulombParameters kSand{ElasticConstants{2.5e6, 0.33}, 39.0 * kPi / 180.0, 0.0, 0.0};
 
 ModelDescription sand_block(double disconnected_below_kg_m3) {
   ModelDescription m;
