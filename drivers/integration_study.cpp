@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace ffp {
@@ -43,22 +44,11 @@ double max_abs(const std::vector<double>& v) {
 
 double peak(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
-/// One law update from (σ, state) in `substeps` equal parts.
-Voigt integrate(const PointLaw& law, Voigt stress, PointState state, const Voigt& increment, int substeps) {
+/// One law update from (σ, state) in `substeps` equal parts. dt = 0: the map
+/// is about the return, not the rate law (the rate stays as it was).
+Voigt integrate(const PointLaw& law, Voigt stress, MaterialState state, const Voigt& increment, int substeps) {
   const Voigt part = increment / substeps;
-  std::visit(
-      [&](const auto& l) {
-        using Law = std::decay_t<decltype(l)>;
-        for (int k = 0; k < substeps; ++k) {
-          if constexpr (std::is_same_v<Law, StrainSofteningMohrCoulomb>) {
-            // dt = 0: the map is about the return, not the rate law (the rate stays as it was).
-            l.update(stress, part, std::get<StrainSofteningMohrCoulomb::State>(state), 0.0);
-          } else {
-            l.update(stress, part);
-          }
-        }
-      },
-      law);
+  for (int k = 0; k < substeps; ++k) update(law, stress, part, state, 0.0);
   return stress;
 }
 
@@ -70,7 +60,7 @@ PointConfig drained_triaxial_config(const PointLaw& law, double cell_pressure_Pa
                                     double strain_rate_per_s, int increments) {
   PointConfig config;
   config.law = law;
-  config.initial_state = initial_state_for(law);
+  config.initial_state = initial_state(law);
   config.initial_stress << -cell_pressure_Pa, -cell_pressure_Pa, -cell_pressure_Pa, 0, 0, 0;
   PathSegment segment;
   segment.control = {Control::stress, Control::strain, Control::stress,
@@ -142,21 +132,12 @@ std::string to_string(MapStart start) {
 }
 
 IsoErrorMap run_iso_error_map(const IsoErrorMapStudy& study) {
-  const ElasticConstants& elastic = elastic_constants_of(study.law);
-  const PointState state = initial_state_for(study.law);
+  const ElasticConstants& elastic = elastic_constants(study.law);
+  const MaterialState state = initial_state(study.law);
   // The starting stresses need the friction angle the law has at its start.
-  double phi = 0.0, cohesion = 0.0;
-  if (const auto* mc = std::get_if<MohrCoulomb>(&study.law)) {
-    phi = mc->parameters().friction_angle_rad;
-    cohesion = mc->parameters().cohesion_Pa;
-  } else if (const auto* ssmc = std::get_if<StrainSofteningMohrCoulomb>(&study.law)) {
-    const MohrCoulombParameters s =
-        ssmc->current_strength(std::get<StrainSofteningMohrCoulomb::State>(state), study.confining_Pa);
-    phi = s.friction_angle_rad;
-    cohesion = s.cohesion_Pa;
-  } else {
-    throw std::invalid_argument("iso-error maps need a Mohr-Coulomb type law");
-  }
+  const std::optional<MohrCoulombParameters> strength = mohr_coulomb_strength(study.law, state, study.confining_Pa);
+  if (!strength) throw std::invalid_argument("iso-error maps need a Mohr-Coulomb type law");
+  const double phi = strength->friction_angle_rad, cohesion = strength->cohesion_Pa;
   // On the surface with σ3 = confining (compression): σ1' = σ3' Nφ + 2c √Nφ.
   const double n_phi = (1.0 + std::sin(phi)) / (1.0 - std::sin(phi));
   const double minor = study.confining_Pa;

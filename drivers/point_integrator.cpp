@@ -10,52 +10,19 @@
 
 namespace ffp {
 
-PointState initial_state_for(const PointLaw& law) {
-  switch (law.index()) {
-    case 0: return LinearElastic::State{};
-    case 1: return MohrCoulomb::State{};
-    default: return StrainSofteningMohrCoulomb::State{};
-  }
-}
-
-const ElasticConstants& elastic_constants_of(const PointLaw& law) {
-  return std::visit(
-      [](const auto& l) -> const ElasticConstants& {
-        using Law = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<Law, LinearElastic>) {
-          return l.elastic();
-        } else {
-          return l.parameters().elastic;
-        }
-      },
-      law);
-}
-
 namespace {
 
 /// One law update on copies: what an increment Δε would do from (σ_n, state_n).
 struct Evaluation {
   Voigt stress;
-  PointState state;
+  MaterialState state;
   ReturnRegion region;
 };
 
-Evaluation evaluate(const PointLaw& law, const Voigt& stress_start, const PointState& state_start,
+Evaluation evaluate(const PointLaw& law, const Voigt& stress_start, const MaterialState& state_start,
                     const Voigt& strain_increment, double dt) {
   Evaluation e{stress_start, state_start, ReturnRegion::elastic};
-  std::visit(
-      [&](const auto& l) {
-        using Law = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<Law, LinearElastic>) {
-          l.update(e.stress, strain_increment);
-          e.region = ReturnRegion::elastic;
-        } else if constexpr (std::is_same_v<Law, MohrCoulomb>) {
-          e.region = l.update(e.stress, strain_increment);
-        } else {
-          e.region = l.update(e.stress, strain_increment, std::get<StrainSofteningMohrCoulomb::State>(e.state), dt);
-        }
-      },
-      law);
+  e.region = update(law, e.stress, strain_increment, e.state, dt);
   return e;
 }
 
@@ -217,7 +184,7 @@ class MixedStep {
 PointHistory integrate_point(const PointConfig& config, const std::function<void(long, long)>& on_step) {
   if (config.initial_state.index() != config.law.index())
     throw std::invalid_argument("integrate_point: the initial state does not belong to the law");
-  const ElasticConstants& elastic = elastic_constants_of(config.law);
+  const ElasticConstants& elastic = elastic_constants(config.law);
   const Eigen::Matrix<double, 6, 6> stiffness = elastic_matrix(elastic);
 
   long total = 0;

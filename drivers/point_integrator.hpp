@@ -17,9 +17,6 @@
 #include <vector>
 
 #include "models/material_law.hpp"
-#include "models/elastic.hpp"
-#include "models/mohr_coulomb.hpp"
-#include "models/strain_softening_mohr_coulomb.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp {
@@ -38,13 +35,8 @@ struct PathSegment {
   double duration_s = 1.0;
 };
 
+/// Any law (models/material_law.hpp); its state is a MaterialState of the same alternative.
 using PointLaw = MaterialLaw;
-/// The state of whichever law is in use (same alternative index as PointLaw).
-using PointState = std::variant<LinearElastic::State, MohrCoulomb::State, StrainSofteningMohrCoulomb::State>;
-
-/// The default (virgin) state of a law.
-PointState initial_state_for(const PointLaw& law);
-const ElasticConstants& elastic_constants_of(const PointLaw& law);
 
 struct NewtonSettings {
   int max_iterations = 25;
@@ -54,7 +46,7 @@ struct NewtonSettings {
 struct PointConfig {
   PointLaw law = LinearElastic(ElasticConstants{});
   Voigt initial_stress = Voigt::Zero();
-  PointState initial_state;  ///< must hold the law's alternative (see initial_state_for)
+  MaterialState initial_state;  ///< must hold the law's alternative (see initial_state(law))
   std::vector<PathSegment> segments;
   NewtonSettings newton;
   long record_every = 1;     ///< keep every n-th increment (the last one always)
@@ -66,7 +58,7 @@ struct PointRecord {
   double time_s = 0.0;
   Voigt strain = Voigt::Zero();  ///< total strain from the start of the path
   Voigt stress = Voigt::Zero();
-  PointState state;
+  MaterialState state;
   ReturnRegion region = ReturnRegion::elastic;
   int newton_iterations = 0;
   double plastic_work_J_m3 = 0.0;  ///< Σ σ_mid : Δε^p so far
@@ -91,7 +83,7 @@ class PointIntegrationFailure : public std::runtime_error {
   int segment = 0;   ///< 0-based path segment
   Voigt stress_start = Voigt::Zero();
   Voigt strain_start = Voigt::Zero();
-  PointState state_start;
+  MaterialState state_start;
   ControlSet control{};
   Voigt prescribed_strain_increment = Voigt::Zero();  ///< strain-controlled components
   Voigt target_stress = Voigt::Zero();                ///< stress-controlled components

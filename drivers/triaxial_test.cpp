@@ -113,7 +113,7 @@ TriaxialResult run_triaxial_test(const TriaxialTestConfig& config,
   r.residual_q_Pa = r.deviatoric_stress_Pa.back();
   r.dissipated_work_J_total = work;
   r.plastic_work_J_total = r.plastic_work_J.back();
-  const ElasticConstants& elastic = elastic_constants_of(config.law);
+  const ElasticConstants& elastic = elastic_constants(config.law);
   r.elastic_energy_change_J = volume * (elastic_energy_density(elastic, r.history.records.back().stress) -
                                         elastic_energy_density(elastic, r.history.records.front().stress));
   r.cell_work_J = config.cell_pressure_Pa * volume * r.volumetric_strain.back();

@@ -1,9 +1,12 @@
 #pragma once
 /// Isotropic linear elasticity: the constants every law shares and the
 /// linear elastic law itself.
+#include <cassert>
 #include <cmath>
 #include <span>
 
+#include "models/return_region.hpp"
+#include "models/state_output.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp {
@@ -50,6 +53,20 @@ class LinearElastic {
   /// Batch update: stress[i] += D : strain_increment[i].
   void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const {
     for (std::size_t i = 0; i < stress.size(); ++i) update(stress[i], strain_increment[i]);
+  }
+
+  // The interface every law has (models/material_law.hpp): no state, no rate, no yield surface.
+  ReturnRegion update(Voigt& stress, const Voigt& strain_increment, State&, double) const {
+    update(stress, strain_increment);
+    return ReturnRegion::elastic;
+  }
+  void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment, std::span<State>, double) const {
+    update(stress, strain_increment);
+  }
+  static std::span<const StateOutput> outputs() { return {}; }
+  double output(const State&, double, StateOutput) const {
+    assert(false && "a linear elastic law has no state outputs");
+    return 0.0;
   }
 
  private:

@@ -2,6 +2,7 @@
 /// Non-associated Mohr-Coulomb, elastic–perfectly plastic, with an exact
 /// return mapping in principal stresses (plane, triaxial-compression edge,
 /// triaxial-extension edge, apex): see models/mohr_coulomb_return.hpp.
+#include <cassert>
 #include <span>
 
 #include "models/elastic.hpp"
@@ -24,6 +25,7 @@ class MohrCoulomb {
   explicit MohrCoulomb(const MohrCoulombParameters& parameters);
 
   const MohrCoulombParameters& parameters() const { return parameters_; }
+  const ElasticConstants& elastic() const { return parameters_.elastic; }
   double p_wave_speed(double density_kg_m3) const { return parameters_.elastic.p_wave_speed(density_kg_m3); }
 
   /// f = (σ1 − σ3) + (σ1 + σ3) sin φ − 2 c cos φ with σ1 ≥ σ2 ≥ σ3 (tension positive).
@@ -34,6 +36,22 @@ class MohrCoulomb {
 
   /// A batch of points with the same parameters.
   void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const;
+
+  // The interface every law has (models/material_law.hpp): no state, no rate.
+  ReturnRegion update(Voigt& stress, const Voigt& strain_increment, State&, double) const {
+    return update(stress, strain_increment);
+  }
+  void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment, std::span<State>, double) const {
+    update(stress, strain_increment);
+  }
+  /// Perfectly plastic: the strength is the parameters' at every state.
+  MohrCoulombParameters current_strength(const State&, double) const { return parameters_; }
+  /// Nothing to report beside the stress (the strength never changes).
+  static std::span<const StateOutput> outputs() { return {}; }
+  double output(const State&, double, StateOutput) const {
+    assert(false && "a Mohr-Coulomb law has no state outputs");
+    return 0.0;
+  }
 
  private:
   MohrCoulombParameters parameters_;

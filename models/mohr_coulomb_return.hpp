@@ -19,11 +19,9 @@
 #include <Eigen/Core>
 
 #include "models/elastic.hpp"
+#include "models/return_region.hpp"
 
 namespace ffp {
-
-/// Which part of the yield surface a return mapping ended on.
-enum class ReturnRegion : unsigned char { elastic, plane, edge_compression, edge_extension, apex };
 
 /// Elasticity in principal axes: Δσ_i = a_ii Δε_i + a_ij Δε_j.
 struct PrincipalStiffness {

@@ -48,6 +48,16 @@ MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& 
   return out;
 }
 
+double StrainSofteningMohrCoulomb::output(const State& state, double mean_pressure_Pa, StateOutput output) const {
+  switch (output) {
+    case StateOutput::plastic_deviatoric_strain: return state.plastic_deviatoric_strain;
+    case StateOutput::friction_angle: return current_strength(state, mean_pressure_Pa).friction_angle_rad;
+    case StateOutput::dilatancy_angle: return current_strength(state, mean_pressure_Pa).dilatancy_angle_rad;
+    case StateOutput::strain_rate: return state.strain_rate_per_s;
+  }
+  return 0.0;
+}
+
 ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& strain_increment, State& state,
                                                 double dt_s) const {
   if (dt_s > 0.0)

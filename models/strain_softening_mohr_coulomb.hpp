@@ -13,6 +13,7 @@
 /// for any η and increment size. The strain rate and the mean pressure for
 /// Bolton's ψ_p are taken explicitly: the rate of the current increment (after
 /// smoothing) and p' at the start of the increment.
+#include <array>
 #include <optional>
 #include <span>
 
@@ -20,6 +21,7 @@
 #include "models/elastic.hpp"
 #include "models/friction_rate_law.hpp"
 #include "models/mohr_coulomb.hpp"
+#include "models/state_output.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp {
@@ -48,6 +50,7 @@ class StrainSofteningMohrCoulomb {
   explicit StrainSofteningMohrCoulomb(const StrainSofteningParameters& parameters);
 
   const StrainSofteningParameters& parameters() const { return parameters_; }
+  const ElasticConstants& elastic() const { return parameters_.elastic; }
   double p_wave_speed(double density_kg_m3) const { return parameters_.elastic.p_wave_speed(density_kg_m3); }
 
   /// The strength (φ', c', ψ) a state currently has at mean pressure p'.
@@ -58,11 +61,19 @@ class StrainSofteningMohrCoulomb {
   void update(std::span<Voigt> stress, std::span<const Voigt> strain_increment, std::span<State> state,
               double dt_s) const;
 
+  /// What drivers report of the state: κ, the current φ' and ψ (at p'), and the smoothed rate.
+  static std::span<const StateOutput> outputs() { return kOutputs; }
+  double output(const State& state, double mean_pressure_Pa, StateOutput output) const;
+
  private:
   struct Peaks {
     double friction_rad;
     double dilatancy_rad;
   };
+  static constexpr std::array<StateOutput, 4> kOutputs = {StateOutput::plastic_deviatoric_strain,
+                                                          StateOutput::friction_angle, StateOutput::dilatancy_angle,
+                                                          StateOutput::strain_rate};
+
   Peaks peaks(const State& state, double mean_pressure_Pa) const;
   MohrCoulombStrength strength(const Peaks& peaks, double decay) const;
 

@@ -1,8 +1,9 @@
 #pragma once
-/// A material group: one constitutive law, its parameters and (where the law
-/// has any) per-particle state, for a contiguous range of particles. A group
-/// updates all its particles in one batch call: the variant is visited once
-/// per batch, never per particle.
+/// A material group: one constitutive law, its parameters and its per-particle
+/// states (one contiguous vector, of the law's State type), for a contiguous
+/// range of particles. A group updates all its particles in one batch call: the
+/// variant is visited once per batch, never per particle. Which law it is, is
+/// models/material_law.hpp's business: nothing here names one.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -11,8 +12,7 @@
 
 #include "models/elastic.hpp"
 #include "models/material_law.hpp"
-#include "models/mohr_coulomb.hpp"
-#include "models/strain_softening_mohr_coulomb.hpp"
+#include "models/state_output.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp::mpm {
@@ -33,12 +33,12 @@ struct MaterialGroup {
   double disconnected_below_kg_m3 = 0.0;
   std::size_t begin = 0;       ///< first particle
   std::size_t end = 0;         ///< one past the last particle
-  std::vector<StrainSofteningMohrCoulomb::State> ssmc_state;  ///< one per particle for SSMC, else empty
+  MaterialStates states;       ///< one per particle, [0, size()) for particles [begin, end)
 
   MaterialGroup(std::string name, MaterialLaw law, double density_kg_m3);
 
   std::size_t size() const { return end - begin; }
-  const ElasticConstants& elastic() const;
+  const ElasticConstants& elastic() const { return elastic_constants(law); }
   /// Constrained modulus M = λ + 2G (c_p = √(M/ρ) at the current density).
   double constrained_modulus() const { return elastic().constrained_modulus(); }
 
@@ -46,6 +46,10 @@ struct MaterialGroup {
   /// σ ← law(σ, Δε). `dt_s` feeds rate-dependent laws.
   void update(std::size_t first, std::size_t last, std::span<Voigt> stress, std::span<const Voigt> strain_increment,
               double dt_s);
+
+  /// out[p] for p in [begin, end): the law's `output` of particle p's state at σ = stress[p]
+  /// (absolute indices). Leaves `out` as it is when the law has no such output.
+  void state_output(StateOutput output, std::span<const Voigt> stress, std::span<double> out) const;
 
   /// Recoverable elastic energy density w = s:s/(4G) + (tr σ)²/(18K) (J/m³).
   double elastic_energy_density(const Voigt& stress) const;

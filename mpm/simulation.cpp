@@ -46,8 +46,7 @@ Simulation::Simulation(const ModelDescription& model)
     groups.back().disconnected_below_kg_m3 = d.disconnected_below_kg_m3;
     groups.back().begin = begin;
     groups.back().end = particles.size();
-    if (std::holds_alternative<StrainSofteningMohrCoulomb>(d.law))
-      groups.back().ssmc_state.assign(groups.back().size(), StrainSofteningMohrCoulomb::State{});
+    groups.back().states = initial_states(d.law, groups.back().size());
     bodies.push_back({d.name, b, 0, begin, particles.size()});
   }
 

@@ -135,7 +135,7 @@ void PenetrometerJob::write_fields(const fs::path& fields, const fs::path& plots
     density[i] = P.mass[i] / P.volume[i];
   }
   const mpm::MaterialGroup& soil = s.groups[0];
-  for (std::size_t k = 0; k < soil.ssmc_state.size(); ++k) ep[soil.begin + k] = soil.ssmc_state[k].plastic_deviatoric_strain;
+  soil.state_output(StateOutput::plastic_deviatoric_strain, P.stress, ep);  // zero where the law has no such state
   VtuPointCloud cloud;
   cloud.x = P.r;
   cloud.y = P.z;

@@ -27,9 +27,7 @@ std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, i
 double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   SceneReader material = scene.object("material", true);
   const MaterialSpec spec = read_material(material, DensityRule::required);
-  double cohesion_Pa = 0.0;
-  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) cohesion_Pa = mc->cohesion_Pa;
-  if (const auto* ss = std::get_if<StrainSofteningParameters>(&spec.parameters)) cohesion_Pa = ss->cohesion_peak_Pa;
+  const double cohesion_Pa = spec.peak_cohesion_Pa();
   d.soil.law = spec.law();
   d.soil.density_kg_m3 = *spec.density_kg_m3;
   SceneReader soil = scene.object("soil");

@@ -1,26 +1,19 @@
 /// The `triaxial` scene kind: drained triaxial element test on the paper's
-/// weightless specimen (drivers/triaxial_test.hpp).
-///
-/// Scene (geotechnical units, compression positive):
-///   material             see drivers/scene/material_scene.hpp (no density: weightless)
-///   cell_pressure_kPa    σ3 (default 1.72, the paper's)
-///   axial_strain_max     default 0.2
-///   increments           equal axial-strain increments (default 2000)
-///   strain_rate_per_s    only the rate law sees it (default 1e-4, quasi-static)
-///   specimen             {height_m: 0.15, diameter_m: 0.07}
-///   newton               {max_iterations, relative_tolerance}
-///   output_every_increments  rows of history.csv (the work integral uses every increment)
+/// weightless specimen (drivers/triaxial_test.hpp). The keys are read by
+/// triaxial_scene.cpp; this file runs the test and writes history.csv, the
+/// summary (peak, residual, the work balance) and the plots.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <ostream>
+#include <span>
+#include <vector>
 
 #include "drivers/app/job.hpp"
 #include "drivers/app/kinds.hpp"
+#include "drivers/app/triaxial_scene.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/output/progress.hpp"
-#include "drivers/scene/material_scene.hpp"
-#include "drivers/triaxial_test.hpp"
 #include "reports/plot.hpp"
 
 namespace ffp {
@@ -29,13 +22,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr long kMaxIncrements = 1'000'000;  // every increment is kept for the work integral (~160 B each)
+/// The outputs of the law's state that are columns: all but rates (the scene's
+/// constant strain_rate_per_s drives the test; the point kind prints them).
+std::vector<StateOutput> state_columns(const MaterialLaw& law) {
+  std::vector<StateOutput> out;
+  for (StateOutput o : state_outputs(law))
+    if (unit(o) != OutputUnit::per_second) out.push_back(o);
+  return out;
+}
 
 class TriaxialJob : public Job {
  public:
-  TriaxialJob(std::string name, MaterialSpec material, TriaxialTestConfig config, long output_every)
-      : name_(std::move(name)), material_(std::move(material)), config_(std::move(config)),
-        output_every_(output_every) {}
+  explicit TriaxialJob(TriaxialScene scene)
+      : name_(std::move(scene.name)), material_(std::move(scene.material)), config_(std::move(scene.config)),
+        output_every_(scene.output_every) {}
 
   void describe(std::ostream& out) const override {
     out << "triaxial: drained, " << material_.model << " material, σ3 = " << 1e-3 * config_.cell_pressure_Pa
@@ -60,13 +60,11 @@ class TriaxialJob : public Job {
 
  private:
   void write_history(const TriaxialResult& r, RunContext& context) const {
-    const auto* law = std::get_if<StrainSofteningMohrCoulomb>(&config_.law);
+    const std::vector<StateOutput> outputs = state_columns(config_.law);
     std::vector<std::string> columns = {"step",           "axial_strain",    "volumetric_strain",
                                         "q_kPa",          "p_kPa",           "axial_displacement_m",
                                         "axial_force_N",  "dissipated_work_J", "plastic_work_J"};
-    if (law)
-      for (const char* c : {"plastic_deviatoric_strain", "friction_angle_deg", "dilatancy_angle_deg"})
-        columns.emplace_back(c);
+    for (StateOutput o : outputs) columns.push_back(output_column(o));
     CsvTable table(columns);
     const std::size_t n = r.axial_strain.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -76,13 +74,8 @@ class TriaxialJob : public Job {
                                  1e-3 * r.deviatoric_stress_Pa[i], 1e-3 * r.mean_stress_Pa[i],
                                  r.axial_displacement_m[i], r.axial_force_N[i], r.dissipated_work_J[i],
                                  r.plastic_work_J[i]};
-      if (law) {
-        const auto& state = std::get<StrainSofteningMohrCoulomb::State>(record.state);
-        const MohrCoulombParameters strength = law->current_strength(state, r.mean_stress_Pa[i]);
-        row.push_back(state.plastic_deviatoric_strain);
-        row.push_back(strength.friction_angle_rad / kDegree);
-        row.push_back(strength.dilatancy_angle_rad / kDegree);
-      }
+      for (StateOutput o : outputs)
+        row.push_back(output_value(o, state_output(config_.law, record.state, r.mean_stress_Pa[i], o)));
       table.add_row(row);
     }
     table.write(context.out_dir / "history.csv");
@@ -152,30 +145,7 @@ class TriaxialJob : public Job {
 }  // namespace
 
 std::unique_ptr<Job> make_triaxial_job(SceneReader& scene, const fs::path&) {
-  const std::string name = scene.text("name", "triaxial");
-  SceneReader material_reader = scene.object("material", true);
-  MaterialSpec material = read_material(material_reader, DensityRule::not_used);
-
-  TriaxialTestConfig config;
-  config.law = material.law();
-  config.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
-  config.axial_strain_max = scene.number("axial_strain_max", Range::half_open(0.0, 1.0), 0.2);
-  if (!(config.axial_strain_max > 0.0)) scene.fail("axial_strain_max", "must be > 0 (compression positive)");
-  config.increments = scene.integer("increments", 1, kMaxIncrements, 2000);
-  config.strain_rate_per_s = scene.number("strain_rate_per_s", Range::positive(1e9, "1/s"), 1e-4);
-  SceneReader specimen = scene.object("specimen");
-  config.specimen.height_m = specimen.number("height_m", Range::positive(100.0, "m"), 0.15);
-  config.specimen.diameter_m = specimen.number("diameter_m", Range::positive(100.0, "m"), 0.07);
-  specimen.finish("specimen (height_m, diameter_m)");
-  SceneReader newton = scene.object("newton");
-  config.newton.max_iterations = newton.integer("max_iterations", 1, 1000, 25);
-  config.newton.relative_tolerance = newton.number("relative_tolerance", Range::closed(1e-15, 1e-2), 1e-10);
-  newton.finish("newton");
-  // Histories beyond ~20,000 rows only slow the plots down.
-  const long output_every =
-      scene.integer("output_every_increments", 1, kMaxIncrements, std::max(1L, config.increments / 20000L));
-  scene.finish("a triaxial scene");
-  return std::make_unique<TriaxialJob>(name, std::move(material), std::move(config), output_every);
+  return std::make_unique<TriaxialJob>(read_triaxial_scene(scene));
 }
 
 }  // namespace ffp

@@ -1,18 +1,8 @@
 #include "drivers/scene/material_scene.hpp"
 
-namespace ffp {
+#include <algorithm>
 
-const ElasticConstants& MaterialSpec::elastic() const {
-  return std::visit(
-      [](const auto& p) -> const ElasticConstants& {
-        if constexpr (std::is_same_v<std::decay_t<decltype(p)>, ElasticConstants>) {
-          return p;
-        } else {
-          return p.elastic;
-        }
-      },
-      parameters);
-}
+namespace ffp {
 
 namespace {
 
@@ -99,6 +89,67 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
   spec.parameters = p;
   m.finish("an ssmc material");
   return spec;
+}
+
+json material_json(const MaterialSpec& spec) {
+  json m;
+  m["model"] = spec.model;
+  const ElasticConstants& e = spec.elastic();
+  m["E_kPa"] = 1e-3 * e.youngs_modulus_Pa;
+  m["nu"] = e.poisson_ratio;
+  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) {
+    m["phi_peak_deg"] = mc->friction_angle_rad / kDegree;
+    m["psi_peak_deg"] = mc->dilatancy_angle_rad / kDegree;
+    m["c_peak_kPa"] = 1e-3 * mc->cohesion_Pa;
+  } else if (const auto* s = std::get_if<StrainSofteningParameters>(&spec.parameters)) {
+    m["phi_peak_deg"] = s->friction_peak_rad / kDegree;
+    m["phi_residual_deg"] = s->friction_residual_rad / kDegree;
+    m["c_peak_kPa"] = 1e-3 * s->cohesion_peak_Pa;
+    m["c_residual_kPa"] = 1e-3 * s->cohesion_residual_Pa;
+    m["eta"] = s->softening_factor;
+    if (s->relative_density) {
+      m["relative_density"] = *s->relative_density;
+    } else {
+      m["psi_peak_deg"] = s->dilatancy_peak_rad / kDegree;
+    }
+    m["psi_residual_deg"] = s->dilatancy_residual_rad / kDegree;
+    m["rate_dependence"] = {{"alpha_phi", s->rate.alpha_phi},
+                            {"reference_strain_rate_per_s", s->rate.reference_strain_rate_per_s},
+                            {"smoothing_increments", s->rate.smoothing_increments},
+                            {"max_phi_deg", s->rate.max_friction_angle_rad / kDegree}};
+  }
+  return m;
+}
+
+MaterialState read_initial_state(SceneReader& scene, const MaterialLaw& law) {
+  MaterialState state = initial_state(law);
+  if (!scene.has("initial_state")) return state;
+  auto* softening = std::get_if<StrainSofteningMohrCoulomb::State>(&state);
+  if (softening == nullptr)
+    scene.fail("initial_state", "only an ssmc material has a state (plastic_deviatoric_strain, strain_rate_per_s)");
+  SceneReader s = scene.object("initial_state");
+  softening->plastic_deviatoric_strain = s.number("plastic_deviatoric_strain", Range::non_negative(1e6), 0.0);
+  softening->strain_rate_per_s = s.number("strain_rate_per_s", Range::non_negative(1e12, "1/s"), 0.0);
+  s.finish("initial_state");
+  return state;
+}
+
+json initial_state_json(const MaterialState& state) {
+  if (const auto* s = std::get_if<StrainSofteningMohrCoulomb::State>(&state))
+    return {{"plastic_deviatoric_strain", s->plastic_deviatoric_strain}, {"strain_rate_per_s", s->strain_rate_per_s}};
+  return nullptr;
+}
+
+std::string output_column(StateOutput output) {
+  switch (unit(output)) {
+    case OutputUnit::radian: return std::string(name(output)) + "_deg";
+    case OutputUnit::per_second: return std::string(name(output)) + "_per_s";
+    default: return std::string(name(output));
+  }
+}
+
+double output_value(StateOutput output, double si_value) {
+  return unit(output) == OutputUnit::radian ? si_value / kDegree : si_value;
 }
 
 }  // namespace ffp

@@ -8,6 +8,10 @@
 /// (Bolton transient dilatancy instead of psi_peak_deg) and an optional
 /// rate_dependence {alpha_phi, reference_strain_rate_per_s, smoothing_increments}.
 /// Each model accepts only its own keys.
+///
+/// This file and models/ are the only places that know which laws there are:
+/// the scene keys of each law's parameters and of its state (a point scene's
+/// initial_state), and the scene units of what a law reports of its state.
 #include <optional>
 #include <string>
 #include <variant>
@@ -15,26 +19,41 @@
 #include "drivers/scene/scene_reader.hpp"
 #include "models/elastic.hpp"
 #include "models/material_law.hpp"
-#include "models/mohr_coulomb.hpp"
-#include "models/strain_softening_mohr_coulomb.hpp"
 #include "models/math_constants.hpp"  // kDegree: scenes give angles in degrees
+#include "models/state_output.hpp"
 
 namespace ffp {
-
 
 struct MaterialSpec {
   std::string model;  ///< linear_elastic | mohr_coulomb | ssmc
   MaterialParameters parameters;
   std::optional<double> density_kg_m3;  ///< present only when the kind asked for it
 
-  const ElasticConstants& elastic() const;
+  const ElasticConstants& elastic() const { return elastic_constants(parameters); }
   MaterialLaw law() const { return make_law(parameters); }
   double at_rest_k0() const { return ffp::at_rest_k0(parameters); }
+  double peak_cohesion_Pa() const { return ffp::peak_cohesion_Pa(parameters); }
 };
 
 enum class DensityRule { not_used, required };
 
 /// Reads and validates a material object (reader positioned on it); finish()es it.
 MaterialSpec read_material(SceneReader& material, DensityRule density);
+
+/// The material as scene keys again (for the reproducer of a failed step).
+json material_json(const MaterialSpec& spec);
+
+/// The scene's optional `initial_state` object (reader positioned on the scene
+/// that holds it): the internal variables of the law's state, each defaulting
+/// to the virgin state's; absent, the virgin state. A law without internal
+/// variables refuses the key.
+MaterialState read_initial_state(SceneReader& scene, const MaterialLaw& law);
+/// A state as the keys of `initial_state` again; null for a law without internal variables.
+json initial_state_json(const MaterialState& state);
+
+/// A law's state output as drivers print it: the column name with its unit
+/// ("friction_angle_deg", "strain_rate_per_s") and the value in that unit.
+std::string output_column(StateOutput output);
+double output_value(StateOutput output, double si_value);
 
 }  // namespace ffp

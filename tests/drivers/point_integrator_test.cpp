@@ -52,7 +52,7 @@ TEST_CASE("elastic moduli are exact on the isotropic and oedometric paths", "[po
   SECTION("isotropic, stress controlled: K = Δp/Δε_v") {
     PointConfig c;
     c.law = LinearElastic(e);
-    c.initial_state = initial_state_for(c.law);
+    c.initial_state = initial_state(c.law);
     c.initial_stress << -1e3, -1e3, -1e3, 0, 0, 0;
     PathSegment s;
     s.control = {Control::stress, Control::stress, Control::stress, Control::strain, Control::strain, Control::strain};
@@ -68,7 +68,7 @@ TEST_CASE("elastic moduli are exact on the isotropic and oedometric paths", "[po
   SECTION("oedometric, strain controlled: M = Δσ_a/Δε_a and K0 = ν/(1 − ν)") {
     PointConfig c;
     c.law = LinearElastic(e);
-    c.initial_state = initial_state_for(c.law);
+    c.initial_state = initial_state(c.law);
     PathSegment s;
     s.control.fill(Control::strain);
     s.target << 0, -0.01, 0, 0, 0, 0;
@@ -143,7 +143,7 @@ TEST_CASE("SSMC: η → large drops abruptly to the residual, η → 0 stays at 
 TEST_CASE("stress-controlled components follow their targets in simple shear", "[point]") {
   PointConfig c;
   c.law = MohrCoulomb(sand_mc(35, 5));
-  c.initial_state = initial_state_for(c.law);
+  c.initial_state = initial_state(c.law);
   c.initial_stress << -10e3, -10e3, -10e3, 0, 0, 0;
   PathSegment s;
   s.control = {Control::strain, Control::stress, Control::strain, Control::strain, Control::strain, Control::strain};
@@ -161,7 +161,7 @@ TEST_CASE("stress-controlled components follow their targets in simple shear", "
 TEST_CASE("a stress target beyond the strength fails with the increment, state and a reproducer", "[point]") {
   PointConfig c;
   c.law = StrainSofteningMohrCoulomb(sand_ssmc(8));
-  c.initial_state = initial_state_for(c.law);
+  c.initial_state = initial_state(c.law);
   c.initial_stress << -1.72e3, -1.72e3, -1.72e3, 0, 0, 0;
   c.newton.max_iterations = 12;
   PathSegment s;

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "models/material_law.hpp"
 #include "models/math_constants.hpp"
@@ -30,4 +32,61 @@ TEST_CASE("make_law keeps the alternative: elastic, Mohr-Coulomb, SSMC", "[model
   s.friction_residual_rad = 0.5;
   s.softening_factor = 8.0;
   CHECK(std::holds_alternative<StrainSofteningMohrCoulomb>(make_law(s)));
+}
+
+namespace {
+
+std::vector<MaterialLaw> every_law() {
+  const double degree = kDegree;
+  const ElasticConstants sand{2.5e6, 0.33};
+  StrainSofteningParameters softening;
+  softening.elastic = sand;
+  softening.friction_peak_rad = 60.0 * degree;
+  softening.friction_residual_rad = 32.0 * degree;
+  softening.dilatancy_peak_rad = 5.0 * degree;
+  softening.softening_factor = 8.0;
+  return {make_law(sand), make_law(MohrCoulombParameters{sand, 39.0 * degree, 0.0, 0.0}), make_law(softening)};
+}
+
+}  // namespace
+
+TEST_CASE("one update for every law: a batch over contiguous states equals the points one by one", "[models]") {
+  for (const MaterialLaw& law : every_law()) {
+    CAPTURE(law.index());
+    CHECK(initial_state(law).index() == law.index());
+    CHECK(elastic_constants(law).youngs_modulus_Pa == 2.5e6);
+    // Drained-like shear from 1.72 kPa: elastic for the elastic law, past yield for the others.
+    Voigt start;
+    start << -1720.0, -1720.0, -1720.0, 0.0, 0.0, 0.0;
+    std::vector<Voigt> stress(5, start), one_by_one = stress;
+    std::vector<Voigt> increment(5);
+    for (int i = 0; i < 5; ++i) increment[i] << 2e-4 * i, -4e-4 * i, 2e-4 * i, 1e-4, 0.0, 0.0;
+    MaterialStates states = initial_states(law, 7);
+    update(law, stress, increment, states, 2, 1e-2);  // points 2..6 of the group
+    for (int i = 0; i < 5; ++i) {
+      MaterialState state = initial_state(law);
+      update(law, one_by_one[i], increment[i], state, 1e-2);
+      CHECK(stress[i] == one_by_one[i]);
+      for (StateOutput o : state_outputs(law)) {
+        std::vector<double> out(1);
+        state_output(law, states, 2 + i, std::span<const Voigt>(&stress[i], 1), o, out);
+        CHECK(out[0] == state_output(law, state, mean_pressure(one_by_one[i]), o));
+      }
+    }
+  }
+}
+
+TEST_CASE("state outputs and the Mohr-Coulomb strength: a softening law reports its state and starts at its peak",
+          "[models]") {
+  const std::vector<MaterialLaw> laws = every_law();
+  CHECK(state_outputs(laws[0]).empty());
+  CHECK(state_outputs(laws[1]).empty());  // perfectly plastic: nothing changes
+  CHECK(has_state_output(laws[2], StateOutput::plastic_deviatoric_strain));
+  CHECK_FALSE(mohr_coulomb_strength(laws[0], initial_state(laws[0]), 1720.0).has_value());
+  CHECK(mohr_coulomb_strength(laws[1], initial_state(laws[1]), 1720.0)->friction_angle_rad ==
+        std::get<MohrCoulomb>(laws[1]).parameters().friction_angle_rad);
+  const MaterialState virgin = initial_state(laws[2]);
+  CHECK(mohr_coulomb_strength(laws[2], virgin, 1720.0)->friction_angle_rad == Approx(60.0 * kDegree));
+  CHECK(state_output(laws[2], virgin, 1720.0, StateOutput::plastic_deviatoric_strain) == 0.0);
+  CHECK(state_output(laws[2], virgin, 1720.0, StateOutput::friction_angle) == Approx(60.0 * kDegree));
 }

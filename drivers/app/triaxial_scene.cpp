@@ -1,0 +1,41 @@
+#include "drivers/app/triaxial_scene.hpp"
+
+#include <algorithm>
+
+namespace ffp {
+
+namespace {
+
+constexpr long kMaxIncrements = 1'000'000;  // every increment is kept for the work integral (~160 B each)
+
+}  // namespace
+
+TriaxialScene read_triaxial_scene(SceneReader& scene) {
+  TriaxialScene out;
+  out.name = scene.text("name", "triaxial");
+  SceneReader material_reader = scene.object("material", true);
+  out.material = read_material(material_reader, DensityRule::not_used);
+
+  TriaxialTestConfig& config = out.config;
+  config.law = out.material.law();
+  config.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
+  config.axial_strain_max = scene.number("axial_strain_max", Range::half_open(0.0, 1.0), 0.2);
+  if (!(config.axial_strain_max > 0.0)) scene.fail("axial_strain_max", "must be > 0 (compression positive)");
+  config.increments = scene.integer("increments", 1, kMaxIncrements, 2000);
+  config.strain_rate_per_s = scene.number("strain_rate_per_s", Range::positive(1e9, "1/s"), 1e-4);
+  SceneReader specimen = scene.object("specimen");
+  config.specimen.height_m = specimen.number("height_m", Range::positive(100.0, "m"), 0.15);
+  config.specimen.diameter_m = specimen.number("diameter_m", Range::positive(100.0, "m"), 0.07);
+  specimen.finish("specimen (height_m, diameter_m)");
+  SceneReader newton = scene.object("newton");
+  config.newton.max_iterations = newton.integer("max_iterations", 1, 1000, 25);
+  config.newton.relative_tolerance = newton.number("relative_tolerance", Range::closed(1e-15, 1e-2), 1e-10);
+  newton.finish("newton");
+  // Histories beyond ~20,000 rows only slow the plots down.
+  out.output_every =
+      scene.integer("output_every_increments", 1, kMaxIncrements, std::max(1L, config.increments / 20000L));
+  scene.finish("a triaxial scene");
+  return out;
+}
+
+}  // namespace ffp
