@@ -13,7 +13,6 @@
 
 namespace ffp {
 
-std::string to_string(PlatenFriction friction) { return friction == PlatenFriction::rough ? "rough" : "smooth"; }
 
 namespace {
 

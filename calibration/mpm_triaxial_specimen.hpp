@@ -60,6 +60,10 @@
 #include <functional>
 #include <string>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <utility>
 
 #include "calibration/numerical_triaxial.hpp"
 #include "drivers/triaxial_test.hpp"
@@ -69,7 +73,10 @@
 namespace ffp {
 
 enum class PlatenFriction { rough, smooth };
-std::string to_string(PlatenFriction friction);
+using PlatenFrictionName = std::pair<PlatenFriction, std::string_view>;
+/// The scene's names of PlatenFriction, in the order messages list them.
+inline constexpr auto kPlatenFrictionNames = std::to_array<PlatenFrictionName>({{PlatenFriction::rough, "rough"}, {PlatenFriction::smooth, "smooth"}});
+inline std::string to_string(PlatenFriction friction) { return std::string(std::ranges::find(kPlatenFrictionNames, friction, &PlatenFrictionName::first)->second); }
 
 struct MpmTriaxialConfig {
   TriaxialSpecimen specimen;         ///< 0.15 m × 0.07 m (the paper's)

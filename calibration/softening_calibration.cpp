@@ -13,9 +13,6 @@
 
 namespace ffp {
 
-std::string to_string(CalibrationMode mode) {
-  return mode == CalibrationMode::dissipated_work ? "dissipated_work" : "curve_least_squares";
-}
 
 double dissipated_work_J(const std::vector<double>& axial_strain, const std::vector<double>& deviatoric_stress_Pa,
                          const TriaxialSpecimen& specimen, double from, double to) {

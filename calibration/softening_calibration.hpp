@@ -28,6 +28,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <utility>
 
 #include "calibration/lab_curve.hpp"
 #include "calibration/numerical_triaxial.hpp"
@@ -36,7 +40,10 @@
 namespace ffp {
 
 enum class CalibrationMode { dissipated_work, curve_least_squares };
-std::string to_string(CalibrationMode mode);
+using CalibrationModeName = std::pair<CalibrationMode, std::string_view>;
+/// The scene's names of CalibrationMode, in the order messages list them.
+inline constexpr auto kCalibrationModeNames = std::to_array<CalibrationModeName>({{CalibrationMode::dissipated_work, "dissipated_work"}, {CalibrationMode::curve_least_squares, "curve_least_squares"}});
+inline std::string to_string(CalibrationMode mode) { return std::string(std::ranges::find(kCalibrationModeNames, mode, &CalibrationModeName::first)->second); }
 
 struct CalibrationSettings {
   CalibrationMode mode = CalibrationMode::dissipated_work;

@@ -18,15 +18,6 @@ std::string row_name(std::size_t index, const std::vector<double>& time_s) {
 
 }  // namespace
 
-std::string_view rate_law_name(RateLaw law) {
-  switch (law) {
-    case RateLaw::logarithmic: return "log";
-    case RateLaw::brilli: return "brilli";
-    case RateLaw::inverse_hyperbolic_sine: return "asinh";
-  }
-  return "?";
-}
-
 // The three forms as BlueDrop_Analysis_Lib (stevADUS) implements them, with
 // the sources it names; the original papers were not at hand to check them.
 double strain_rate_factor(const RateCorrection& c, double v, double v_ref, double v_impact) {

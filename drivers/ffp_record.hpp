@@ -17,6 +17,9 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <utility>
 
 namespace ffp {
 
@@ -28,12 +31,14 @@ class RecordError : public std::runtime_error {
 };
 
 /// Strain-rate factors f_SR(v) that turn q_dyn into q_sbc = q_dyn / f_SR.
-enum class RateLaw : std::uint8_t {
-  logarithmic,              ///< "log"
-  brilli,                   ///< "brilli"
-  inverse_hyperbolic_sine,  ///< "asinh"
-};
-std::string_view rate_law_name(RateLaw law);
+enum class RateLaw : std::uint8_t { logarithmic, brilli, inverse_hyperbolic_sine };
+using RateLawName = std::pair<RateLaw, std::string_view>;
+/// The laws' names: their keys under the scene's rate_laws and their q_sbc_<name>_kPa columns.
+inline constexpr auto kRateLawNames = std::to_array<RateLawName>(
+    {{RateLaw::logarithmic, "log"}, {RateLaw::brilli, "brilli"}, {RateLaw::inverse_hyperbolic_sine, "asinh"}});
+inline std::string_view rate_law_name(RateLaw law) {
+  return std::ranges::find(kRateLawNames, law, &RateLawName::first)->second;
+}
 
 struct RateCorrection {
   RateLaw law = RateLaw::logarithmic;
@@ -57,6 +62,10 @@ struct TipAreas {
 };
 
 enum class DropMedium : std::uint8_t { air, water };
+using DropMediumName = std::pair<DropMedium, std::string_view>;
+/// The scene's names of DropMedium, in the order messages list them.
+inline constexpr auto kDropMediumNames = std::to_array<DropMediumName>({{DropMedium::air, "air"}, {DropMedium::water, "water"}});
+inline std::string to_string(DropMedium medium) { return std::string(std::ranges::find(kDropMediumNames, medium, &DropMediumName::first)->second); }
 
 struct RecordSettings {
   double mass_kg = 7.71;

@@ -123,13 +123,6 @@ TriaxialErrorResult run_triaxial_error_study(const TriaxialErrorStudy& study,
   return result;
 }
 
-std::string to_string(MapStart start) {
-  switch (start) {
-    case MapStart::plane: return "plane";
-    case MapStart::edge: return "edge";
-    default: return "apex";
-  }
-}
 
 IsoErrorMap run_iso_error_map(const IsoErrorMapStudy& study) {
   const ElasticConstants& elastic = elastic_constants(study.law);

@@ -11,6 +11,10 @@
 #include <functional>
 #include <string>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <utility>
 
 #include "drivers/point_integrator.hpp"
 
@@ -55,7 +59,10 @@ TriaxialErrorResult run_triaxial_error_study(const TriaxialErrorStudy& study,
                                              const std::function<void(const std::string&)>& on_stage = {});
 
 enum class MapStart { plane, edge, apex };
-std::string to_string(MapStart start);
+using MapStartName = std::pair<MapStart, std::string_view>;
+/// The starts' names (output files iso_error_<law>_<start>.csv), in the order they run.
+inline constexpr auto kMapStartNames = std::to_array<MapStartName>({{MapStart::plane, "plane"}, {MapStart::edge, "edge"}, {MapStart::apex, "apex"}});
+inline std::string to_string(MapStart start) { return std::string(std::ranges::find(kMapStartNames, start, &MapStartName::first)->second); }
 
 struct IsoErrorMapStudy {
   PointLaw law = LinearElastic(ElasticConstants{});

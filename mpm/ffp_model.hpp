@@ -12,6 +12,11 @@
 #include <memory>
 #include <optional>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "mpm/contact_law.hpp"
 #include "mpm/deformable_penetrometer.hpp"
@@ -68,6 +73,10 @@ enum class PicBlend : std::uint8_t {
   per_step,       ///< the core's rule: (1 − α) of PIC every step, whatever Δt is
   per_soil_step,  ///< (1 − α)·Δt/Δt_soil per step: the same damping per unit time at any Δt
 };
+using PicBlendName = std::pair<PicBlend, std::string_view>;
+/// The scene's names of PicBlend, in the order messages list them.
+inline constexpr auto kPicBlendNames = std::to_array<PicBlendName>({{PicBlend::per_soil_step, "per_soil_step"}, {PicBlend::per_step, "per_step"}});
+inline std::string to_string(PicBlend b) { return std::string(std::ranges::find(kPicBlendNames, b, &PicBlendName::first)->second); }
 
 struct FfpDescription {
   FfpSoil soil;

@@ -9,6 +9,10 @@
 #include <string>
 #include <variant>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <utility>
 
 #include "mpm/boundary_conditions.hpp"
 #include "mpm/material_group.hpp"
@@ -23,6 +27,10 @@ enum class Transfer : std::uint8_t {
   musl_remapped,  ///< the paper's code (Anura3D): positions and strain rate both from the remapped
                   ///< velocities, no second contact correction: a particle moves as it strains
 };
+using TransferName = std::pair<Transfer, std::string_view>;
+/// The scene's names of Transfer, in the order messages list them.
+inline constexpr auto kTransferNames = std::to_array<TransferName>({{Transfer::usl, "usl"}, {Transfer::musl, "musl"}, {Transfer::musl_remapped, "musl_remapped"}});
+inline std::string to_string(Transfer t) { return std::string(std::ranges::find(kTransferNames, t, &TransferName::first)->second); }
 
 struct SolverSettings {
   ShapeFunction shape_function = ShapeFunction::gimp;
@@ -79,6 +87,10 @@ struct BodyDescription {
 };
 
 enum class Side : std::uint8_t { inner, outer };
+using SideName = std::pair<Side, std::string_view>;
+/// The scene's names of Side, in the order messages list them.
+inline constexpr auto kSideNames = std::to_array<SideName>({{Side::inner, "inner"}, {Side::outer, "outer"}});
+inline std::string to_string(Side s) { return std::string(std::ranges::find(kSideNames, s, &SideName::first)->second); }
 
 /// A normal pressure on the inner or outer grid line r = r_0 / r_max, over
 /// z_min ≤ z ≤ z_max (the body's face must lie on that grid line).

@@ -36,6 +36,11 @@
 /// soil's momentum, the body's impulse and their exact balance are unchanged.
 #include <cstdint>
 #include <vector>
+#include <algorithm>
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "mpm/contact_law.hpp"
 #include "mpm/penetrometer_geometry.hpp"
@@ -50,6 +55,10 @@ enum class RigidMotion : std::uint8_t {
 };
 
 enum class RigidBodyForce : std::uint8_t { contact_impulse, soil_internal_force };
+using RigidBodyForceName = std::pair<RigidBodyForce, std::string_view>;
+/// The scene's names of RigidBodyForce, in the order messages list them.
+inline constexpr auto kRigidBodyForceNames = std::to_array<RigidBodyForceName>({{RigidBodyForce::contact_impulse, "contact_impulse"}, {RigidBodyForce::soil_internal_force, "soil_internal_force"}});
+inline std::string to_string(RigidBodyForce f) { return std::string(std::ranges::find(kRigidBodyForceNames, f, &RigidBodyForceName::first)->second); }
 
 struct RigidPenetrometerSettings {
   PenetrometerShape shape;

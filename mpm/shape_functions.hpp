@@ -4,12 +4,20 @@
 /// G_ip = (s_r'·s_z, s_r·s_z'). Any (non-uniform, moving) node spacing.
 #include <algorithm>
 #include <cstdint>
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "mpm/grid_axis.hpp"
 
 namespace ffp::mpm {
 
 enum class ShapeFunction : std::uint8_t { linear, gimp };
+using ShapeFunctionName = std::pair<ShapeFunction, std::string_view>;
+/// The scene's names of ShapeFunction, in the order messages list them.
+inline constexpr auto kShapeFunctionNames = std::to_array<ShapeFunctionName>({{ShapeFunction::linear, "linear"}, {ShapeFunction::gimp, "gimp"}});
+inline std::string to_string(ShapeFunction f) { return std::string(std::ranges::find(kShapeFunctionNames, f, &ShapeFunctionName::first)->second); }
 
 /// Nodes of one particle's support in one direction: base, base+1 (, base+2).
 struct Weights1D {

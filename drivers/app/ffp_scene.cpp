@@ -99,10 +99,7 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
       if (f.has(key))
         f.fail(key, "a rigid penetrometer has no stiffness or particles: give ffp.deformable {E_kPa, nu, "
                     "particles_per_cell} for an elastic one");
-    d.force = f.choice("rigid_body_force", {"contact_impulse", "soil_internal_force"}, "contact_impulse") ==
-                      "contact_impulse"
-                  ? mpm::RigidBodyForce::contact_impulse
-                  : mpm::RigidBodyForce::soil_internal_force;
+    d.force = f.choice("rigid_body_force", mpm::kRigidBodyForceNames, mpm::RigidBodyForce::contact_impulse);
     d.external_force_N = f.number("external_force_N", Range::closed(-1e9, 1e9, "N (+ up)"), 0.0);
   }
   f.finish("ffp (mass_kg, impact_velocity_m_s, tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
@@ -161,22 +158,14 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
 void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {
   SceneReader solver = scene.object("solver");
   mpm::SolverSettings& s = d.solver;
-  s.shape_function = solver.choice("shape_function", {"linear", "gimp"}, "gimp") == "gimp" ? mpm::ShapeFunction::gimp
-                                                                                           : mpm::ShapeFunction::linear;
+  s.shape_function = solver.choice("shape_function", mpm::kShapeFunctionNames, mpm::ShapeFunction::gimp);
   // USL by default: of the two consistent steps, the one whose final penetration
   // changes by shrinking amounts as h halves (the report's convergence study).
-  {
-    const std::string transfer = solver.choice("transfer", {"usl", "musl", "musl_remapped"}, "usl");
-    s.transfer = transfer == "usl" ? mpm::Transfer::usl
-                 : transfer == "musl" ? mpm::Transfer::musl
-                                      : mpm::Transfer::musl_remapped;
-  }
+  s.transfer = solver.choice("transfer", mpm::kTransferNames, mpm::Transfer::usl);
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
   s.strain_smoothing = solver.boolean("strain_smoothing", true);
-  d.pic_blend = solver.choice("pic_blend", {"per_soil_step", "per_step"}, "per_soil_step") == "per_step"
-                    ? mpm::PicBlend::per_step
-                    : mpm::PicBlend::per_soil_step;
+  d.pic_blend = solver.choice("pic_blend", mpm::kPicBlendNames, mpm::PicBlend::per_soil_step);
   if (kind == PenetrometerKind::cpt) {
     // A quasi-static push may damp the waves that an undamped explicit model keeps forever.
     s.local_damping = solver.number("local_damping", Range::half_open(0.0, 1.0), 0.0);

@@ -62,7 +62,9 @@ struct KindEntry {
 /// Every kind this build can run.
 const std::vector<KindEntry>& registered_kinds();
 
-/// Validate a scene (overrides already applied): returns the job and fills `echo`.
-std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo);
+/// Validate a scene (overrides already applied): returns the job and fills `echo`;
+/// `log`, when given, collects every key the kind's readers know.
+std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo,
+                              KeyLog* log = nullptr);
 
 }  // namespace ffp

@@ -20,9 +20,9 @@ const std::vector<KindEntry>& registered_kinds() {
   return kinds;
 }
 
-std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo) {
+std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo, KeyLog* log) {
   echo = json::object();
-  SceneReader top(scene, "", echo);
+  SceneReader top(scene, "", echo, log);
   std::vector<std::string> names;
   for (const auto& k : registered_kinds()) names.emplace_back(k.kind);
   const json* kind_value = scene.contains("kind") ? &scene.at("kind") : nullptr;

@@ -43,9 +43,11 @@ std::vector<double> read_axis(SceneReader& mesh, const std::string& axis, double
   return nodes;
 }
 
-mpm::Fixity read_fixity(SceneReader& b, const std::string& key, std::string_view fallback, bool axis) {
-  const std::string v = axis ? b.choice(key, {"roller", "fixed"}, fallback) : b.choice(key, {"free", "roller", "fixed"}, fallback);
-  return v == "free" ? mpm::Fixity::free : v == "roller" ? mpm::Fixity::roller : mpm::Fixity::fixed;
+/// The symmetry axis keeps v_r = 0: it is a roller at least.
+mpm::Fixity read_fixity(SceneReader& b, const std::string& key, mpm::Fixity fallback, bool axis) {
+  using mpm::Fixity;
+  return axis ? b.choice(key, mpm::kFixityNames, {Fixity::roller, Fixity::fixed}, fallback)
+              : b.choice(key, mpm::kFixityNames, fallback);
 }
 
 mpm::Region read_region(SceneReader& region, const std::vector<double>& r, const std::vector<double>& z) {
@@ -142,16 +144,16 @@ MpmScene read_mpm_scene(SceneReader& scene) {
   }
 
   SceneReader bc = scene.object("boundaries");
-  model.boundaries.inner = read_fixity(bc, axis ? "axis" : "inner", "roller", axis);
-  model.boundaries.outer = read_fixity(bc, "outer", "roller", false);
-  model.boundaries.bottom = read_fixity(bc, "bottom", "fixed", false);
-  model.boundaries.top = read_fixity(bc, "top", "free", false);
+  model.boundaries.inner = read_fixity(bc, axis ? "axis" : "inner", mpm::Fixity::roller, axis);
+  model.boundaries.outer = read_fixity(bc, "outer", mpm::Fixity::roller, false);
+  model.boundaries.bottom = read_fixity(bc, "bottom", mpm::Fixity::fixed, false);
+  model.boundaries.top = read_fixity(bc, "top", mpm::Fixity::free, false);
   bc.finish(axis ? "boundaries (axis, outer, bottom, top)" : "boundaries (inner, outer, bottom, top)");
 
   std::vector<SceneReader> loads = scene.objects("surface_pressures", 0, 16);
   for (SceneReader& l : loads) {
     mpm::SurfacePressure p;
-    p.side = l.choice("side", {"inner", "outer"}) == "inner" ? mpm::Side::inner : mpm::Side::outer;
+    p.side = l.choice("side", mpm::kSideNames);
     if (p.side == mpm::Side::inner && axis) l.fail("side", "the inner side is the symmetry axis: it carries no pressure");
     const double pressure = 1e3 * l.number("pressure_kPa", Range::closed(-1e9, 1e9, "kPa"));
     const double ramp = l.number("ramp_time_s", Range::non_negative(kMaxTime_s, "s"), 0.0);
@@ -168,14 +170,8 @@ MpmScene read_mpm_scene(SceneReader& scene) {
 
   SceneReader solver = scene.object("solver");
   mpm::SolverSettings& s = model.solver;
-  s.shape_function = solver.choice("shape_function", {"linear", "gimp"}, "gimp") == "gimp" ? mpm::ShapeFunction::gimp
-                                                                                           : mpm::ShapeFunction::linear;
-  {
-    const std::string transfer = solver.choice("transfer", {"usl", "musl", "musl_remapped"}, "musl");
-    s.transfer = transfer == "usl" ? mpm::Transfer::usl
-                 : transfer == "musl" ? mpm::Transfer::musl
-                                      : mpm::Transfer::musl_remapped;
-  }
+  s.shape_function = solver.choice("shape_function", mpm::kShapeFunctionNames, mpm::ShapeFunction::gimp);
+  s.transfer = solver.choice("transfer", mpm::kTransferNames, mpm::Transfer::musl);
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
   if (solver.has("dt_s")) s.fixed_dt_s = solver.number("dt_s", Range::positive(kMaxTime_s, "s"));

@@ -35,7 +35,7 @@ RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
     const double apex = f.number("cone_apex_angle_deg", Range::open(0.0, 180.0, "degrees"), 60.0) * kDegree;
     s.tip.cone_height_m = s.tip.base_radius_m / std::tan(0.5 * apex);
   }
-  s.medium = scene.choice("medium", {"air", "water"}, "air") == "water" ? DropMedium::water : DropMedium::air;
+  s.medium = scene.choice("medium", kDropMediumNames, DropMedium::air);
   if (s.medium == DropMedium::water) {
     s.volume_m3 = f.number("volume_m3", Range::positive(1e3, "m³ (the penetrometer's, for its buoyancy)"));
   } else if (f.has("volume_m3")) {

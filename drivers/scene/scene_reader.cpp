@@ -57,8 +57,8 @@ std::string Range::describe() const {
   return out;
 }
 
-SceneReader::SceneReader(const json& object, std::string path, json& echo)
-    : object_(&object), path_(std::move(path)), echo_(&echo) {
+SceneReader::SceneReader(const json& object, std::string path, json& echo, KeyLog* log)
+    : object_(&object), path_(std::move(path)), echo_(&echo), log_(log) {
   if (!object_->is_object()) {
     throw SceneError((path_.empty() ? std::string("scene") : path_) + ": must be a JSON object, got " +
                      type_name(*object_));
@@ -84,6 +84,7 @@ const json* SceneReader::find(std::string_view key) {
 
 void SceneReader::allow(std::string_view key) {
   if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+  if (log_ != nullptr) log_->paths.insert(child_path(key));
 }
 
 std::optional<double> SceneReader::optional_number(std::string_view key, const Range& range) {
@@ -160,23 +161,35 @@ std::string SceneReader::text(std::string_view key, std::string_view fallback) {
   return text(key);
 }
 
-std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed) {
-  std::vector<std::string> options(allowed.begin(), allowed.end());
+std::size_t SceneReader::choose(std::string_view key, const std::vector<std::string>& options,
+                                const std::string_view* fallback) {
+  if (fallback != nullptr && !has(key)) {
+    allow(key);
+    (*echo_)[std::string(key)] = std::string(*fallback);
+    return static_cast<std::size_t>(std::find(options.begin(), options.end(), *fallback) - options.begin());
+  }
   const json* v = find(key);
   if (v == nullptr) fail(key, "is required (one of: " + join_quoted(options) + ")");
   if (!v->is_string()) fail(key, "must be one of: " + join_quoted(options) + "; got " + type_name(*v));
   const std::string value = v->get<std::string>();
-  if (std::find(options.begin(), options.end(), value) == options.end()) {
+  const auto match = std::find(options.begin(), options.end(), value);
+  if (match == options.end()) {
     const std::string guess = nearest(value, options);
     fail(key, "'" + value + "' is not allowed: must be one of: " + join_quoted(options) +
                   (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
   }
   (*echo_)[std::string(key)] = value;
-  return value;
+  return static_cast<std::size_t>(match - options.begin());
+}
+
+std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed) {
+  const std::vector<std::string> options(allowed.begin(), allowed.end());
+  return options[choose(key, options, nullptr)];
 }
 
 std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed,
                                 std::string_view fallback) {
+  // The fallback need not be one of `allowed` (it never was checked): it is returned as given.
   if (!has(key)) {
     allow(key);
     (*echo_)[std::string(key)] = std::string(fallback);
@@ -222,7 +235,7 @@ SceneReader SceneReader::object(std::string_view key, bool required) {
   if (v != nullptr && !v->is_object()) fail(key, "must be an object, got " + type_name(*v));
   json& child_echo = (*echo_)[std::string(key)];
   if (!child_echo.is_object()) child_echo = json::object();
-  return SceneReader(v != nullptr ? *v : empty, child_path(key), child_echo);
+  return SceneReader(v != nullptr ? *v : empty, child_path(key), child_echo, log_);
 }
 
 std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t min_size, std::size_t max_size) {
@@ -241,7 +254,7 @@ std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t 
   arr = json::array();
   for (std::size_t i = 0; i < v->size(); ++i) arr.push_back(json::object());
   for (std::size_t i = 0; i < v->size(); ++i)
-    out.emplace_back((*v)[i], child_path(key) + "[" + std::to_string(i) + "]", arr[i]);
+    out.emplace_back((*v)[i], child_path(key) + "[" + std::to_string(i) + "]", arr[i], log_);
   return out;
 }
 

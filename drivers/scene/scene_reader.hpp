@@ -5,11 +5,15 @@
 /// object, so a run's summary.json shows the scene exactly as it was run.
 /// finish() rejects keys nobody asked for, suggesting the nearest valid key:
 /// a scene carries only what its kind and model use.
+#include <array>
+#include <cstddef>
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -38,11 +42,25 @@ struct Range {
   std::string describe() const;  ///< e.g. "> 0 and ≤ 1e+09 kPa"
 };
 
+/// The full path of every key the readers of one scene know (read or
+/// allowed), e.g. "bodies[0].material.E_kPa": what a kind accepts, for the
+/// test that ties README's key tables to the readers.
+struct KeyLog {
+  std::set<std::string> paths;
+};
+
+/// An enum's scene names, declared once beside the enum, in the order
+/// messages list them: {value, "name"} pairs. The scene reader's choice and
+/// the enum's to_string are both read from it.
+template <class Enum, std::size_t N>
+using EnumNames = std::array<std::pair<Enum, std::string_view>, N>;
+
 class SceneReader {
  public:
   /// `path` is the JSON path of `object` ("" for the top level); `echo` receives
-  /// the resolved values (must outlive the reader).
-  SceneReader(const json& object, std::string path, json& echo);
+  /// the resolved values (must outlive the reader). `log`, when given, collects
+  /// the keys this reader and its nested readers know.
+  SceneReader(const json& object, std::string path, json& echo, KeyLog* log = nullptr);
 
   const std::string& path() const { return path_; }
   bool has(std::string_view key) const;
@@ -58,6 +76,22 @@ class SceneReader {
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed,
                      std::string_view fallback);
+  /// One of an enum's names (its EnumNames table); the echo holds the name.
+  template <class Enum, std::size_t N>
+  Enum choice(std::string_view key, const EnumNames<Enum, N>& names) {
+    const std::vector<Enum> values = all_of(names);
+    return values[choose(key, names_of(names, values), nullptr)];
+  }
+  template <class Enum, std::size_t N>
+  Enum choice(std::string_view key, const EnumNames<Enum, N>& names, Enum fallback) {
+    return choice_among(key, names, all_of(names), fallback);
+  }
+  /// Only the values `allowed`, listed in that order (an axis cannot be a free boundary).
+  template <class Enum, std::size_t N>
+  Enum choice(std::string_view key, const EnumNames<Enum, N>& names, std::initializer_list<Enum> allowed,
+              Enum fallback) {
+    return choice_among(key, names, std::vector<Enum>(allowed), fallback);
+  }
   /// A list of numbers, each in range, with a length in [min_size, max_size].
   std::vector<double> numbers(std::string_view key, const Range& range, std::size_t min_size,
                               std::size_t max_size);
@@ -83,11 +117,39 @@ class SceneReader {
  private:
   const json* find(std::string_view key);
   std::string child_path(std::string_view key) const;
+  /// The index in `options` of the key's value (or of `fallback` when the key is absent).
+  std::size_t choose(std::string_view key, const std::vector<std::string>& options, const std::string_view* fallback);
+
+  template <class Enum, std::size_t N>
+  Enum choice_among(std::string_view key, const EnumNames<Enum, N>& names, const std::vector<Enum>& values,
+                    Enum fallback) {
+    const std::string_view fallback_name = name_in(names, fallback);
+    return values[choose(key, names_of(names, values), &fallback_name)];
+  }
+  template <class Enum, std::size_t N>
+  static std::vector<Enum> all_of(const EnumNames<Enum, N>& names) {
+    std::vector<Enum> values;
+    for (const auto& entry : names) values.push_back(entry.first);
+    return values;
+  }
+  template <class Enum, std::size_t N>
+  static std::string_view name_in(const EnumNames<Enum, N>& names, Enum value) {
+    for (const auto& entry : names)
+      if (entry.first == value) return entry.second;
+    return "?";
+  }
+  template <class Enum, std::size_t N>
+  static std::vector<std::string> names_of(const EnumNames<Enum, N>& names, const std::vector<Enum>& values) {
+    std::vector<std::string> out;
+    for (Enum v : values) out.emplace_back(name_in(names, v));
+    return out;
+  }
 
   const json* object_;
   std::string path_;
   json* echo_;
   std::vector<std::string> known_;
+  KeyLog* log_ = nullptr;
 };
 
 /// Levenshtein distance, for "did you mean" suggestions.

@@ -1,6 +1,7 @@
 /// Error against run time of the constitutive integration (issue: models).
 #include "reports/studies/studies.hpp"
 #include "reports/studies/study_helpers.hpp"
+#include "drivers/integration_study.hpp"
 
 namespace ffp {
 
@@ -41,7 +42,8 @@ Study integration_error_study(const std::filesystem::path& scenes_dir) {
         "triaxial-compression edge and at the apex, against 2000 substeps. Colours are log10 of the relative "
         "stress error.");
     for (const char* law : {"mohr_coulomb", "ssmc"}) {
-      for (const char* start : {"plane", "edge", "apex"}) {
+      for (const MapStartName& entry : kMapStartNames) {
+        const std::string start(entry.second);
         const std::string key = std::string(law) + "_" + start;
         const double max_error = summary["iso_error_maps"][key]["max_error"].get<double>();
         include_run_figure(results, 0, "plots/iso_error_" + key + ".png", "iso_error_" + key + ".png",

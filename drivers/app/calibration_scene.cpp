@@ -1,0 +1,142 @@
+#include "drivers/app/calibration_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "drivers/app/memory_check.hpp"
+#include "drivers/scene/material_scene.hpp"
+
+namespace ffp {
+
+namespace fs = std::filesystem;
+
+std::string to_string(SpecimenType type) {
+  return std::string(std::ranges::find(kSpecimenTypeNames, type, &SpecimenTypeName::first)->second);
+}
+
+std::string format_significant(double v, int digits) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+  return buffer;
+}
+
+/// The grid spans the specimen and its radial margin (plus a platen cell above
+/// and below), the particles fill the specimen at particles_per_cell² per cell.
+mpm::ModelSize specimen_size(const MpmTriaxialConfig& m) {
+  const double radius = 0.5 * m.specimen.diameter_m;
+  const double cells_r = std::ceil(radius * (1.0 + m.radial_margin) / m.cell_m) + 1.0;
+  const double cells_z = std::ceil(m.specimen.height_m / m.cell_m) + 2.0;
+  const double specimen_cells = std::ceil(radius / m.cell_m) * std::ceil(m.specimen.height_m / m.cell_m);
+  mpm::ModelSize size;
+  size.nodes = static_cast<std::size_t>(std::min(1e15, (cells_r + 1.0) * (cells_z + 1.0)));
+  size.particles = static_cast<std::size_t>(
+      std::min(1e15, specimen_cells * m.particles_per_cell * m.particles_per_cell));
+  return size;
+}
+
+namespace {
+
+/// The meshed specimen's own keys (specimen.type = mpm).
+void read_mpm_specimen(SceneReader& specimen, MpmTriaxialConfig& m) {
+  m.cell_m = specimen.number("cell_m", Range::positive(0.5 * m.specimen.height_m, "m (at most half the height)"), 0.01);
+  m.platen_velocity_m_s = specimen.number("platen_velocity_m_s", Range::positive(10.0, "m/s"), 0.01);
+  m.platens = specimen.choice("platens", kPlatenFrictionNames, PlatenFriction::rough);
+  m.shape_function = specimen.choice("shape_function", mpm::kShapeFunctionNames,
+                                     {mpm::ShapeFunction::gimp, mpm::ShapeFunction::linear}, mpm::ShapeFunction::gimp);
+  m.courant = specimen.number("courant", Range::positive(1.0), 0.9);
+  m.flip_fraction = specimen.number("flip_fraction", Range::closed(0.0, 1.0), 0.9);
+  m.particles_per_cell = specimen.integer("particles_per_cell", 1, 8, 2);
+  m.density_kg_m3 = specimen.number("density_kg_m3", Range::positive(1e5, "kg/m³"), 14.6e3 / 9.81);
+  m.output_strain_step = specimen.number(
+      "output_strain_step", Range::positive(0.5 * m.axial_strain_max, "(at most half the lab's last strain)"), 1e-3);
+  m.radial_margin = specimen.number("radial_margin", Range::positive(10.0), 0.5);
+  require_fits_in_memory(specimen_size(m), "specimen.cell_m",
+                         "use a larger specimen.cell_m or fewer specimen.particles_per_cell");
+  specimen.finish("an mpm specimen (type, height_m, diameter_m, cell_m, platen_velocity_m_s, platens, "
+                  "shape_function, courant, flip_fraction, particles_per_cell, density_kg_m3, output_strain_step, "
+                  "radial_margin)");
+}
+
+}  // namespace
+
+CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scene_dir) {
+  CalibrationScene spec;
+  const std::string file = scene.text("lab_curve_csv");
+  spec.lab_file = (fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file).lexically_normal();
+  try {
+    spec.lab = read_lab_curve(spec.lab_file);
+  } catch (const SceneError& e) {
+    throw SceneError(std::string("lab_curve_csv: ") + e.what());
+  }
+
+  SceneReader material_reader = scene.object("material", true);
+  const MaterialSpec material = read_material(material_reader, DensityRule::not_used);
+  if (material.model != "ssmc")
+    scene.fail("material.model", "must be ssmc: the calibration fits its softening factor eta");
+  spec.material = std::get<StrainSofteningParameters>(material.parameters);
+
+  spec.settings.mode = scene.choice("mode", kCalibrationModeNames, CalibrationMode::dissipated_work);
+  spec.settings.eta_min = scene.number("eta_min", Range::positive(1e4), 0.1);
+  spec.settings.eta_max = scene.number("eta_max", Range::positive(1e4), 500.0);
+  if (!(spec.settings.eta_max > spec.settings.eta_min))
+    scene.fail("eta_max", "must be above eta_min (" + format_significant(spec.settings.eta_min) + ")");
+  spec.eta_start = spec.material.softening_factor;
+  if (!(spec.eta_start >= spec.settings.eta_min && spec.eta_start <= spec.settings.eta_max))
+    scene.fail("material.eta", "is where the fit starts: must lie in [eta_min, eta_max] = [" +
+                                   format_significant(spec.settings.eta_min) + ", " +
+                                   format_significant(spec.settings.eta_max) + "]");
+  spec.settings.eta_start = spec.eta_start;
+  spec.compare_eta = scene.optional_numbers("compare_eta", Range::positive(1e4), 0, 5).value_or(std::vector<double>{2.5, 15.0});
+
+  spec.test.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
+  SceneReader specimen = scene.object("specimen");
+  spec.specimen = specimen.choice("type", kSpecimenTypeNames, SpecimenType::element);
+  const bool mpm_specimen = spec.specimen == SpecimenType::mpm;
+  spec.test.specimen.height_m = specimen.number("height_m", Range::positive(100.0, "m"), 0.15);
+  spec.test.specimen.diameter_m = specimen.number("diameter_m", Range::positive(100.0, "m"), 0.07);
+  spec.settings.specimen = spec.test.specimen;
+  spec.test.axial_strain_max = spec.lab.axial_strain.back();  // the model covers the lab's range exactly
+  if (mpm_specimen) {
+    MpmTriaxialConfig& m = spec.mpm;
+    m.specimen = spec.test.specimen;
+    m.cell_pressure_Pa = spec.test.cell_pressure_Pa;
+    m.axial_strain_max = spec.test.axial_strain_max;
+    read_mpm_specimen(specimen, m);
+    for (const char* key : {"increments", "strain_rate_per_s"})
+      if (scene.has(key))
+        scene.fail(key, "belongs to the element test; an mpm specimen (specimen.type = mpm) is resolved by its "
+                        "cell_m and time step, and strained by its platen_velocity_m_s");
+  } else {
+    specimen.finish("an element specimen (type, height_m, diameter_m; the MPM keys need \"type\": \"mpm\")");
+    spec.test.increments = scene.integer("increments", 10, 1'000'000, 1000);
+    spec.test.strain_rate_per_s = scene.number("strain_rate_per_s", Range::positive(1e9, "1/s"), 1e-4);
+  }
+  // The second fit doubles the cost: on by default only for the (cheap) element test.
+  spec.compare_modes = scene.boolean("compare_modes", !mpm_specimen);
+  spec.settings.scan_points = scene.integer("scan_points", 2, 1000, 9);
+  spec.settings.max_iterations = scene.integer("max_iterations", 1, 10000, 50);
+  spec.settings.derivative_step =
+      scene.number("derivative_step_ln_eta", Range::positive(0.5), mpm_specimen ? 0.1 : 1e-4);
+  spec.settings.parameter_tolerance =
+      scene.number("parameter_tolerance", Range::open(0.0, 1.0), mpm_specimen ? 1e-4 : 1e-8);
+  spec.settings.work_tolerance =
+      scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
+
+  spec.fitted_peak_friction = scene.boolean("fit_peak_friction", false);
+  if (spec.fitted_peak_friction) {
+    if (spec.material.cohesion_peak_Pa != 0.0)
+      scene.fail("fit_peak_friction", "assumes c' = 0 (q_peak = σ3 (Nφ − 1)); the material has c_peak_kPa > 0");
+    const double phi = peak_friction_from_peak_q(spec.lab.peak_q_Pa(), spec.test.cell_pressure_Pa);
+    if (!(phi > spec.material.friction_residual_rad))
+      scene.fail("fit_peak_friction", "the lab peak q = " + format_significant(1e-3 * spec.lab.peak_q_Pa()) +
+                                          " kPa implies φ'_p = " + format_significant(phi / kDegree) +
+                                          "°, not above phi_residual_deg = " +
+                                          format_significant(spec.material.friction_residual_rad / kDegree) + "°");
+    spec.material.friction_peak_rad = phi;
+  }
+  scene.finish("a calibration scene");
+  return spec;
+}
+
+}  // namespace ffp
