@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "drivers/app/calibration_scene.hpp"
+#include "models/math_constants.hpp"
 #include "drivers/app/ffp_scene.hpp"
 #include "drivers/app/integration_error_scene.hpp"
 #include "drivers/app/inverse_scene.hpp"
@@ -58,7 +59,7 @@ InverseScene inverse_scene(const std::vector<std::string>& overrides = {}) {
   return out;
 }
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
 
 }  // namespace
 
@@ -79,7 +80,7 @@ TEST_CASE("calibration reader: calibration_dr15 is the paper's element-test fit 
   CHECK(c.settings.derivative_step == 1e-4);
   CHECK(c.settings.parameter_tolerance == 1e-8);
   CHECK(c.settings.work_tolerance == 0.0);
-  CHECK(c.material.friction_peak_rad == Approx(40.0 * kDeg));
+  CHECK(c.material.friction_peak_rad == Approx(40.0 * kDegree));
   CHECK_FALSE(c.fitted_peak_friction);
 }
 
@@ -176,7 +177,7 @@ TEST_CASE("ffp reader: the reference drop and its bad keys", "[app][scene][ffp]"
   CHECK_FALSE(s.model.prescribed);
   CHECK_FALSE(s.model.deformable);
   CHECK(s.model.force == mpm::RigidBodyForce::contact_impulse);
-  CHECK(s.model.contact.friction == Approx(std::tan(20.0 * kDeg)));
+  CHECK(s.model.contact.friction == Approx(std::tan(20.0 * kDegree)));
   CHECK(s.model.mesh.min_cell_m == 0.01);
   CHECK(s.model.solver.transfer == mpm::Transfer::usl);
   CHECK(s.model.solver.shape_function == mpm::ShapeFunction::gimp);
