@@ -28,9 +28,9 @@
 /// the interval since the previous row (impulse difference / time difference), so Σ reaction·Δt over
 /// the rows is the exact impulse; deceleration_g uses the same mean. fields/particles_NNNN.vtu + .pvd,
 /// plots/time_histories.png (Fig. 7 style), plots/depth_profiles.png (Fig. 8b,c style),
-/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style), and summary figures (see run()). An ffp (not a
-/// cpt) run also writes record.csv and plots/record_profiles.png: its deceleration interpreted as a
-/// measured drop is (record_output.hpp).
+/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style; ffp_output.hpp), and summary figures
+/// (ffp_summary.hpp). An ffp (not a cpt) run also writes record.csv and plots/record_profiles.png:
+/// its deceleration interpreted as a measured drop is (record_output.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -46,7 +46,6 @@
 #include "drivers/app/memory_check.hpp"
 #include "drivers/app/mpm_run_loop.hpp"
 #include "drivers/app/particle_fields.hpp"
-#include "drivers/app/record_output.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/parallel.hpp"
@@ -116,7 +115,13 @@ class PenetrometerJob : public Job {
   void observe_step(Extremes& e) const;
   void observe_row(Extremes& e) const;
   void write_summary(json& sum, const MpmRunResult& result, const Extremes& e, std::size_t field_files) const;
-  void write_plots(const fs::path& plots, const json& sum) const;
+  /// A flat punch's plateau: the mean pressure over its settlement window, from the exact impulse.
+  double plateau_pressure_Pa() const {
+    const BearingPlateau& b = *scene_.bearing;
+    const double R = scene_.model.shape.base_radius_m, v0 = -scene_.model.velocity_m_s;
+    return mean_reaction(samples_, b.from_ratio * R / v0, b.to_ratio * R / v0) / base_area_m2();
+  }
+  void write_plots(const fs::path& plots) const;
 
   FfpScene scene_;
   std::string name_;
@@ -176,6 +181,7 @@ void PenetrometerJob::run(RunContext& context) {
   ParticleFieldSeries fields(context.out_dir / "fields");
   fs::create_directories(plots);
   CsvTable history = history_table();
+  samples_.clear();
   Extremes extremes;
   MpmRunCallbacks callbacks;
   callbacks.record_row = [&] { record_row(history); };
@@ -189,19 +195,11 @@ void PenetrometerJob::run(RunContext& context) {
   const MpmRunResult result = run_mpm(s, times, callbacks, cpt() ? "cpt" : "ffp", name_, context.show_progress);
   context.steps = result.steps;
   history.write(context.out_dir / "history.csv");
-  if (!cpt() && weight_N() > 0.0) {
-    RecordSettings settings;
-    settings.mass_kg = run_->penetrometer_mass_kg();
-    settings.gravity_m_s2 = scene_.model.gravity_m_s2;
-    settings.tip = {scene_.model.shape.base_radius_m, scene_.model.shape.cone_height_m()};
-    settings.impact_velocity_m_s = -scene_.model.velocity_m_s;
-    settings.impact_time_s = 0.0;
-    settings.rate_laws = default_rate_laws();
-    write_simulated_record(samples_, settings, name_, context.out_dir, plots);
-  }
+  if (!cpt() && weight_N() > 0.0)
+    write_simulated_record(samples_, scene_.model, run_->penetrometer_mass_kg(), name_, context.out_dir, plots);
   fields.finish();
   write_summary(context.summary, result, extremes, fields.size());
-  write_plots(plots, context.summary);
+  write_plots(plots);
 }
 
 void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const Extremes& e,
@@ -225,10 +223,8 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
     sum["push_velocity_m_s"] = v0;
     sum["time_of_peak_s"] = f.time_of_peak_reaction_s;
     if (scene_.bearing) {
-      // The plateau mean pressure: the mean over the settlement window, from the exact impulse.
       const BearingPlateau& b = *scene_.bearing;
-      const double R = scene_.model.shape.base_radius_m;
-      const double pressure_Pa = mean_reaction(samples_, b.from_ratio * R / v0, b.to_ratio * R / v0) / base_area_m2();
+      const double pressure_Pa = plateau_pressure_Pa();
       sum["plateau_mean_pressure_kPa"] = 1e-3 * pressure_Pa;
       sum["plateau_settlement_ratio"] = {b.from_ratio, b.to_ratio};
       sum["bearing_factor"] = pressure_Pa / b.cohesion_Pa;
@@ -269,12 +265,12 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
   sum["field_files"] = field_files;
 }
 
-void PenetrometerJob::write_plots(const fs::path& plots, const json& sum) const {
+void PenetrometerJob::write_plots(const fs::path& plots) const {
   if (cpt() && scene_.bearing) {
     const BearingPlateau& b = *scene_.bearing;
     write_pressure_settlement_plot(samples_, name_,
                                    {scene_.model.shape.base_radius_m, base_area_m2(), b.cohesion_Pa, b.from_ratio,
-                                    b.to_ratio, sum["bearing_factor"].get<double>()},
+                                    b.to_ratio, plateau_pressure_Pa() / b.cohesion_Pa},
                                    plots);
   } else if (cpt()) {
     write_cpt_plot(samples_, name_, plots);

@@ -116,8 +116,15 @@ void write_pressure_settlement_plot(std::span<const FfpSample> samples, const st
   write_png(p, plots / "pressure_settlement.png");
 }
 
-void write_simulated_record(std::span<const FfpSample> samples, const RecordSettings& settings, const std::string& name,
-                            const fs::path& out_dir, const fs::path& plots) {
+void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
+                            const std::string& name, const fs::path& out_dir, const fs::path& plots) {
+  RecordSettings settings;
+  settings.mass_kg = mass_kg;
+  settings.gravity_m_s2 = model.gravity_m_s2;
+  settings.tip = {model.shape.base_radius_m, model.shape.cone_height_m()};
+  settings.impact_velocity_m_s = -model.velocity_m_s;
+  settings.impact_time_s = 0.0;
+  settings.rate_laws = default_rate_laws();
   const InterpretedRecord record =
       interpret_record(column(samples, &FfpSample::time_s), column(samples, &FfpSample::deceleration_g), settings);
   record_table(record, settings).write(out_dir / "record.csv");

@@ -7,7 +7,6 @@
 #include <string>
 
 #include "drivers/app/ffp_summary.hpp"
-#include "drivers/ffp_record.hpp"
 #include "mpm/ffp_model.hpp"
 
 namespace ffp {
@@ -37,7 +36,9 @@ void write_pressure_settlement_plot(std::span<const FfpSample> samples, const st
 /// The run's deceleration read as a measured record would be (the `record` kind's
 /// interpretation): out_dir/record.csv and plots/record_profiles.png, so a simulation
 /// and a drop compare column for column.
-void write_simulated_record(std::span<const FfpSample> samples, const RecordSettings& settings, const std::string& name,
-                            const std::filesystem::path& out_dir, const std::filesystem::path& plots);
+/// Impact at t = 0 with the scene's impact velocity.
+void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
+                            const std::string& name, const std::filesystem::path& out_dir,
+                            const std::filesystem::path& plots);
 
 }  // namespace ffp
