@@ -16,23 +16,22 @@
 ///   output      {history_interval_s, history [quantities], field_times_s | field_interval_s,
 ///                probes [{name, r_m, z_m}]}
 /// Writes history.csv, fields/particles_NNNN.vtu + fields/particles.pvd, plots/energy.png.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include "drivers/app/job.hpp"
 #include "drivers/app/kinds.hpp"
-#include "drivers/app/mpm_scene.hpp"
-#include "drivers/output/csv_writer.hpp"
-#include "drivers/output/progress.hpp"
-#include "drivers/output/vtu_writer.hpp"
-#include "mpm/diagnostics.hpp"
 #include "drivers/app/memory_check.hpp"
-#include "drivers/app/thread_governor.hpp"
+#include "drivers/app/mpm_run_loop.hpp"
+#include "drivers/app/mpm_scene.hpp"
+#include "drivers/app/particle_fields.hpp"
+#include "drivers/output/csv_writer.hpp"
+#include "mpm/diagnostics.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
 #include "reports/plot.hpp"
@@ -49,11 +48,46 @@ std::string format_seconds(double s) {
   return buffer;
 }
 
+/// A history column after time_s, its name resolved once: a figure of the diagnostics
+/// of one body or of all, or the time step.
+using DiagnosticFigure = double (*)(const mpm::Diagnostics&);
+
+struct HistoryQuantity {
+  DiagnosticFigure of = nullptr;    ///< unused for dt_s; an unknown name gives NaN
+  std::optional<std::size_t> body;  ///< the body measured; none: all
+  bool is_dt = false;
+};
+
+DiagnosticFigure diagnostic_named(const std::string& name) {
+  using D = const mpm::Diagnostics&;
+  if (name == "kinetic_energy_J") return [](D d) { return d.kinetic_energy_J; };
+  if (name == "strain_energy_J") return [](D d) { return d.strain_energy_J; };
+  if (name == "gravity_energy_J") return [](D d) { return d.gravity_energy_J; };
+  if (name == "total_energy_J") return [](D d) { return d.total_energy_J(); };
+  if (name == "momentum_z_N_s") return [](D d) { return d.momentum_z_N_s; };
+  if (name == "mass_kg") return [](D d) { return d.mass_kg; };
+  if (name == "max_speed_m_s") return [](D d) { return d.max_speed_m_s; };
+  if (name == "mean_z_m") return [](D d) { return d.mass_kg > 0 ? d.mass_z_kg_m / d.mass_kg : 0.0; };
+  if (name == "mean_v_z_m_s") return [](D d) { return d.mass_kg > 0 ? d.momentum_z_N_s / d.mass_kg : 0.0; };
+  return [](D) { return std::numeric_limits<double>::quiet_NaN(); };
+}
+
+/// `dt_s`, `<body>_<quantity>` (the first body whose name prefixes it) or `<quantity>` of all bodies.
+HistoryQuantity resolve_quantity(const std::string& q, const std::vector<std::string>& body_names) {
+  if (q == "dt_s") return {nullptr, std::nullopt, true};
+  for (std::size_t b = 0; b < body_names.size(); ++b) {
+    const std::string prefix = body_names[b] + "_";
+    if (q.rfind(prefix, 0) == 0) return {diagnostic_named(q.substr(prefix.size())), b};
+  }
+  return {diagnostic_named(q), std::nullopt};
+}
+
 class MpmJob : public Job {
  public:
   MpmJob(MpmScene scene, std::string name)
       : scene_(std::move(scene)), name_(std::move(name)), simulation_(scene_.model), initial_dt_s_(simulation_.dt_s) {
     for (const MpmProbe& probe : scene_.output.probes) probe_particles_.push_back(nearest_particle(probe));
+    for (const std::string& q : scene_.output.history) quantities_.push_back(resolve_quantity(q, scene_.body_names));
   }
 
   const mpm::Simulation& simulation() const { return simulation_; }
@@ -94,13 +128,13 @@ class MpmJob : public Job {
 
   std::vector<std::string> columns() const;
   std::vector<double> row() const;
-  void write_fields(const fs::path& dir, int index, PvdIndex& pvd) const;
 
   MpmScene scene_;
   std::string name_;
   mpm::Simulation simulation_;
   double initial_dt_s_;
   std::vector<std::size_t> probe_particles_;
+  std::vector<HistoryQuantity> quantities_;  ///< scene_.output.history resolved
 };
 
 std::vector<std::string> MpmJob::columns() const {
@@ -116,32 +150,11 @@ std::vector<double> MpmJob::row() const {
   const mpm::Simulation& s = simulation_;
   const mpm::Diagnostics all = mpm::measure(s);
   std::vector<double> r = {s.time_s};
-  for (const std::string& q : scene_.output.history) {
-    auto global = [&](const std::string& name, const mpm::Diagnostics& d) -> double {
-      if (name == "kinetic_energy_J") return d.kinetic_energy_J;
-      if (name == "strain_energy_J") return d.strain_energy_J;
-      if (name == "gravity_energy_J") return d.gravity_energy_J;
-      if (name == "total_energy_J") return d.total_energy_J();
-      if (name == "momentum_z_N_s") return d.momentum_z_N_s;
-      if (name == "mass_kg") return d.mass_kg;
-      if (name == "max_speed_m_s") return d.max_speed_m_s;
-      if (name == "mean_z_m") return d.mass_kg > 0 ? d.mass_z_kg_m / d.mass_kg : 0.0;
-      if (name == "mean_v_z_m_s") return d.mass_kg > 0 ? d.momentum_z_N_s / d.mass_kg : 0.0;
-      return std::numeric_limits<double>::quiet_NaN();
-    };
-    if (q == "dt_s") {
+  for (const HistoryQuantity& q : quantities_) {
+    if (q.is_dt)
       r.push_back(s.dt_s);
-      continue;
-    }
-    bool done = false;
-    for (std::size_t b = 0; b < scene_.body_names.size() && !done; ++b) {
-      const std::string prefix = scene_.body_names[b] + "_";
-      if (q.rfind(prefix, 0) == 0) {
-        r.push_back(global(q.substr(prefix.size()), mpm::measure_body(s, b)));
-        done = true;
-      }
-    }
-    if (!done) r.push_back(global(q, all));
+    else
+      r.push_back(q.of(q.body ? mpm::measure_body(s, *q.body) : all));
   }
   for (std::size_t p : probe_particles_) {
     const Voigt& sig = s.particles.stress[p];
@@ -151,49 +164,14 @@ std::vector<double> MpmJob::row() const {
   return r;
 }
 
-void MpmJob::write_fields(const fs::path& dir, int index, PvdIndex& pvd) const {
-  const mpm::Simulation& s = simulation_;
-  const mpm::Particles& P = s.particles;
-  const std::size_t n = P.size();
-  std::vector<double> body(n), dr(n), dz(n), srr(n), szz(n), stt(n), srz(n), p(n), q(n), ed(n), density(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Voigt& sig = P.stress[i];
-    body[i] = P.body[i];
-    dr[i] = P.r[i] - P.r0[i];
-    dz[i] = P.z[i] - P.z0[i];
-    srr[i] = 1e-3 * sig[0];
-    szz[i] = 1e-3 * sig[1];
-    stt[i] = 1e-3 * sig[2];
-    srz[i] = 1e-3 * sig[3];
-    p[i] = 1e-3 * mean_pressure(sig);
-    q[i] = 1e-3 * deviatoric_stress(sig);
-    ed[i] = deviatoric_strain(P.strain[i]);
-    density[i] = P.mass[i] / P.volume[i];
-  }
-  VtuPointCloud cloud;
-  cloud.x = P.r;
-  cloud.y = P.z;
-  cloud.scalars = {{"body", body},           {"sigma_rr_kPa", srr}, {"sigma_zz_kPa", szz},
-                   {"sigma_tt_kPa", stt},    {"sigma_rz_kPa", srz}, {"p_kPa", p},
-                   {"q_kPa", q},             {"deviatoric_strain", ed}, {"density_kg_m3", density}};
-  cloud.vectors = {{"velocity_m_s", P.vr, P.vz, {}}, {"displacement_m", dr, dz, {}}};
-  char file[64];
-  std::snprintf(file, sizeof file, "particles_%04d.vtu", index);
-  write_vtu(dir / file, cloud);
-  pvd.add(s.time_s, file);
-}
-
 void MpmJob::run(RunContext& context) {
   mpm::Simulation& s = simulation_;
-  const MpmOutput& output = scene_.output;
-  if (context.show_progress) std::fprintf(stderr, "mpm stages: %s\n", s.stages.describe().c_str());
-  const fs::path fields = context.out_dir / "fields";
-  fs::create_directories(fields);
+  ParticleFieldSeries fields(context.out_dir / "fields");
   fs::create_directories(context.out_dir / "plots");
-  PvdIndex pvd;
   CsvTable history(columns());
   std::vector<double> t, kinetic, strain, gravity, total;
-  auto record = [&] {
+  MpmRunCallbacks callbacks;
+  callbacks.record_row = [&] {
     history.add_row(row());
     const mpm::Diagnostics d = mpm::measure(s);
     t.push_back(s.time_s);
@@ -202,42 +180,12 @@ void MpmJob::run(RunContext& context) {
     gravity.push_back(d.gravity_energy_J);
     total.push_back(d.total_energy_J());
   };
+  callbacks.write_fields = [&] { fields.write(s.particles, s.time_s, {.stress_components = true, .extra = {}}); };
   const mpm::Diagnostics initial = mpm::measure(s);
-  std::size_t next_field = 0;
-  int field_index = 0;
-  auto fields_due = [&] {
-    while (next_field < output.field_times_s.size() && s.time_s >= output.field_times_s[next_field] * (1 - 1e-12)) {
-      ++next_field;
-      if (next_field == output.field_times_s.size() || s.time_s < output.field_times_s[next_field]) {
-        write_fields(fields, field_index++, pvd);
-      }
-    }
-  };
-  record();
-  fields_due();
-  double next_history = output.history_interval_s;
-  Progress progress("mpm " + name_, scene_.end_time_s, context.show_progress);
-  const double end = scene_.end_time_s;
-  ThreadGovernor threads;
-  try {
-    while (s.time_s < end * (1.0 - 1e-12)) {
-      if (s.time_s + s.dt_s > end) s.dt_s = end - s.time_s;  // land on end_time_s
-      s.advance();
-      if (s.time_s >= next_history * (1.0 - 1e-12) || s.time_s >= end * (1.0 - 1e-12)) {
-        record();
-        while (next_history <= s.time_s * (1.0 + 1e-12)) next_history += output.history_interval_s;
-      }
-      fields_due();
-      progress.update(s.time_s, s.step);
-      threads.poll();
-    }
-  } catch (const mpm::StepFailure& e) {
-    throw RunFailure(std::string("mpm step ") + std::to_string(s.step) + ": " + e.what());
-  }
-  progress.finish();
-  context.steps = s.step;
+  const MpmOutputTimes times{scene_.end_time_s, scene_.output.history_interval_s, scene_.output.field_times_s};
+  context.steps = run_mpm(s, times, callbacks, "mpm", name_, context.show_progress).steps;
   history.write(context.out_dir / "history.csv");
-  if (pvd.size() > 0) pvd.write(fields / "particles.pvd");
+  fields.finish();
 
   Plot energy;
   energy.title = name_ + ": energy";
@@ -259,7 +207,7 @@ void MpmJob::run(RunContext& context) {
   sum["final_kinetic_energy_J"] = final_state.kinetic_energy_J;
   sum["mass_kg"] = final_state.mass_kg;
   sum["wall_clamps"] = s.wall_clamps;
-  sum["field_files"] = pvd.size();
+  sum["field_files"] = fields.size();
 }
 
 }  // namespace
@@ -267,18 +215,14 @@ void MpmJob::run(RunContext& context) {
 std::unique_ptr<Job> make_mpm_job(SceneReader& scene, const fs::path&) {
   const std::string name = scene.text("name", "mpm");
   MpmScene parsed = read_mpm_scene(scene);
-  std::unique_ptr<MpmJob> job;
-  try {
+  std::unique_ptr<MpmJob> job = build_mpm_model("mpm", [&] {
     const mpm::ModelSize size = mpm::estimate_model_size(parsed.model, memory_budget_bytes());
     require_fits_in_memory(size, "mesh",
                            "use larger mesh.cell_r_m / cell_z_m or fewer particles_per_cell in the bodies");
-    job = std::make_unique<MpmJob>(std::move(parsed), name);
-    job->size = size;
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(std::string("mpm scene: ") + e.what());
-  } catch (const mpm::StepFailure& e) {
-    throw SceneError(std::string("mpm scene: ") + e.what());
-  }
+    auto made = std::make_unique<MpmJob>(std::move(parsed), name);
+    made->size = size;
+    return made;
+  });
   const mpm::Simulation& s = job->simulation();
   if (s.settings.fixed_dt_s && *s.settings.fixed_dt_s > s.dt_limit_s) {
     char message[256];

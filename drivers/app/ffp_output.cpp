@@ -1,0 +1,134 @@
+#include "drivers/app/ffp_output.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "drivers/app/record_output.hpp"
+#include "models/voigt.hpp"
+#include "reports/plot.hpp"
+
+namespace ffp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<double> column(std::span<const FfpSample> samples, double FfpSample::*member) {
+  std::vector<double> values;
+  values.reserve(samples.size());
+  for (const FfpSample& s : samples) values.push_back(s.*member);
+  return values;
+}
+
+/// The outline as a polyline in (r, z), from the tip up to z_max.
+Series outline(const mpm::FfpRun& run, double z_max) {
+  Series s;
+  s.title = "penetrometer";
+  s.style = "lines";
+  const double tip = run.tip_z_m(), length = run.geometry().shape().total_length_m();
+  const double top = std::min(length, z_max - tip);
+  const int n = 400;
+  for (int k = 0; k <= n; ++k) {
+    const double h = top * k / n;
+    s.x.push_back(run.geometry().radius_at(std::min(h, length)));
+    s.y.push_back(tip + h);
+  }
+  return s;
+}
+
+Plot line_plot(const std::vector<double>& x, const std::vector<double>& y, const std::string& x_label,
+               const std::string& y_label, const std::string& title, const std::string& name) {
+  Plot p;
+  p.title = title;
+  p.x_label = x_label;
+  p.y_label = y_label;
+  p.series = {{x, y, name}};
+  p.key_position = "off";
+  return p;
+}
+
+}  // namespace
+
+void write_strain_map(const mpm::FfpRun& run, const std::string& name, double colour_max, const fs::path& plots) {
+  const mpm::Simulation& s = run.simulation();
+  const mpm::Particles& P = s.particles;
+  const mpm::MaterialGroup& soil = s.groups[0];
+  ColourMap map;
+  char title[160];
+  std::snprintf(title, sizeof title, "%s: deviatoric strain at t = %.3f s (penetration %.3f m)", name.c_str(), s.time_s,
+                run.penetration_m());
+  map.title = title;
+  map.x_label = "r (m)";
+  map.y_label = "z (m)";
+  map.colour_label = "deviatoric strain";
+  for (std::size_t i = soil.begin; i < soil.end; ++i) {
+    map.x.push_back(P.r[i]);
+    map.y.push_back(P.z[i]);
+    map.value.push_back(deviatoric_strain(P.strain[i]));
+  }
+  double z_top = 0.0;
+  for (double z : map.y) z_top = std::max(z_top, z);
+  map.overlays.push_back(outline(run, z_top + 0.05));
+  map.colour_min = 0.0;
+  map.colour_max = colour_max;
+  map.point_size = 0.3;
+  char file[64];
+  std::snprintf(file, sizeof file, "deviatoric_strain_t%.3f.png", s.time_s);
+  write_png(map, plots / file);
+}
+
+void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name, const fs::path& plots) {
+  const std::vector<double> t = column(samples, &FfpSample::time_s), depth = column(samples, &FfpSample::penetration_m),
+                            velocity = column(samples, &FfpSample::velocity_m_s),
+                            deceleration = column(samples, &FfpSample::deceleration_g),
+                            reaction = column(samples, &FfpSample::reaction_N);
+  Plot penetration = line_plot(t, depth, "time (s)", "penetration (m)", name + ": penetration", name);
+  penetration.reverse_y = true;
+  write_png_stack({penetration, line_plot(t, velocity, "time (s)", "velocity (m/s)", "velocity", name),
+                   line_plot(t, deceleration, "time (s)", "deceleration (g)", "deceleration", name),
+                   line_plot(t, reaction, "time (s)", "reaction (N)", "reaction", name)},
+                  plots / "time_histories.png");
+  write_png_stack(
+      {line_plot(depth, velocity, "penetration (m)", "velocity (m/s)", name + ": velocity profile", name),
+       line_plot(depth, deceleration, "penetration (m)", "deceleration (g)", "deceleration profile", name)},
+      plots / "depth_profiles.png");
+}
+
+void write_cpt_plot(std::span<const FfpSample> samples, const std::string& name, const fs::path& plots) {
+  write_png(line_plot(column(samples, &FfpSample::penetration_m), column(samples, &FfpSample::reaction_N),
+                      "penetration (m)", "reaction F_0 (N)", name + ": static reaction profile", name),
+            plots / "reaction_profile.png");
+}
+
+void write_pressure_settlement_plot(std::span<const FfpSample> samples, const std::string& name,
+                                    const PressureSettlement& curve, const fs::path& plots) {
+  std::vector<double> ratio, factor;
+  for (const FfpSample& s : samples) {
+    ratio.push_back(s.penetration_m / curve.base_radius_m);
+    factor.push_back(s.reaction_N / curve.base_area_m2 / curve.cohesion_Pa);
+  }
+  Plot p = line_plot(ratio, factor, "settlement / radius s/R", "mean pressure / c'", name + ": pressure–settlement",
+                     name);
+  const double n = curve.bearing_factor;
+  p.series.push_back({{curve.from_ratio, curve.to_ratio}, {n, n}, "plateau mean"});
+  p.key_position = "bottom right";
+  write_png(p, plots / "pressure_settlement.png");
+}
+
+void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
+                            const std::string& name, const fs::path& out_dir, const fs::path& plots) {
+  RecordSettings settings;
+  settings.mass_kg = mass_kg;
+  settings.gravity_m_s2 = model.gravity_m_s2;
+  settings.tip = {model.shape.base_radius_m, model.shape.cone_height_m()};
+  settings.impact_velocity_m_s = -model.velocity_m_s;
+  settings.impact_time_s = 0.0;
+  settings.rate_laws = default_rate_laws();
+  const InterpretedRecord record =
+      interpret_record(column(samples, &FfpSample::time_s), column(samples, &FfpSample::deceleration_g), settings);
+  record_table(record, settings).write(out_dir / "record.csv");
+  write_record_plots(record, settings, name, plots / "record_profiles.png");
+}
+
+}  // namespace ffp

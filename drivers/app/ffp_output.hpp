@@ -1,0 +1,44 @@
+#pragma once
+/// What an `ffp` or `cpt` run writes besides history.csv, the fields and the
+/// summary: the figures of the paper's kind (Figs. 7, 8b,c, 9 and 14a) and, for an
+/// ffp run, its deceleration interpreted as a measured drop is (record.csv).
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "drivers/app/ffp_summary.hpp"
+#include "mpm/ffp_model.hpp"
+
+namespace ffp {
+
+/// Fig. 9: the soil's accumulated deviatoric strain with the outline on top,
+/// plots/deviatoric_strain_tT.TTT.png at the run's current time.
+void write_strain_map(const mpm::FfpRun& run, const std::string& name, double colour_max,
+                      const std::filesystem::path& plots);
+
+/// Fig. 7 (plots/time_histories.png: penetration, velocity, deceleration, reaction against time) and
+/// Fig. 8b,c (plots/depth_profiles.png: velocity and deceleration against depth).
+void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name, const std::filesystem::path& plots);
+
+/// Fig. 14a: the static reaction against depth, plots/reaction_profile.png.
+void write_cpt_plot(std::span<const FfpSample> samples, const std::string& name, const std::filesystem::path& plots);
+
+/// A flat punch's pressure–settlement curve normalised, p/c' against s/R, with the plateau
+/// mean over its settlement window: plots/pressure_settlement.png.
+struct PressureSettlement {
+  double base_radius_m = 0.0, base_area_m2 = 0.0, cohesion_Pa = 0.0;
+  double from_ratio = 0.0, to_ratio = 0.0;  ///< the plateau's settlement window / R
+  double bearing_factor = 0.0;              ///< the plateau mean pressure / c'
+};
+void write_pressure_settlement_plot(std::span<const FfpSample> samples, const std::string& name,
+                                    const PressureSettlement& curve, const std::filesystem::path& plots);
+
+/// The run's deceleration read as a measured record would be (the `record` kind's
+/// interpretation): out_dir/record.csv and plots/record_profiles.png, so a simulation
+/// and a drop compare column for column.
+/// Impact at t = 0 with the scene's impact velocity.
+void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
+                            const std::string& name, const std::filesystem::path& out_dir,
+                            const std::filesystem::path& plots);
+
+}  // namespace ffp
