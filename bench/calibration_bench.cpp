@@ -17,7 +17,6 @@ namespace {
 
 using namespace ffp;
 
-
 /// The scenes' materials: data/scenes/calibration_dr00.json and _dr15.json.
 StrainSofteningParameters sand(bool dense) {
   StrainSofteningParameters p;
@@ -40,7 +39,8 @@ LabCurve lab(bool dense) {
 
 void BM_Calibration(benchmark::State& bench) {
   const bool dense = bench.range(0) == 15;
-  const CalibrationMode mode = bench.range(1) == 0 ? CalibrationMode::dissipated_work : CalibrationMode::curve_least_squares;
+  const CalibrationMode mode =
+      bench.range(1) == 0 ? CalibrationMode::dissipated_work : CalibrationMode::curve_least_squares;
   const LabCurve curve = lab(dense);
   TriaxialTestConfig test;
   test.axial_strain_max = curve.axial_strain.back();

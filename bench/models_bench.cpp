@@ -7,9 +7,9 @@
 #include <benchmark/benchmark.h>
 
 #include "models/elastic.hpp"
+#include "models/math_constants.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
-#include "models/math_constants.hpp"
 
 namespace {
 

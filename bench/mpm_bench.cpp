@@ -15,16 +15,15 @@
 #include <set>
 #include <string>
 
+#include "models/math_constants.hpp"
 #include "mpm/ffp_model.hpp"
 #include "mpm/parallel.hpp"
 #include "mpm/simulation.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
-
 
 /// `cells` × `cells` cells filled with 2 × 2 particles in a 0.4 m × 0.4 m block
 /// (160: 102,400 particles), a few empty cells around it.
@@ -73,11 +72,12 @@ void BM_MpmStep(benchmark::State& state) {
   const int previous = thread_count();
   set_thread_count(threads);
   Simulation s = sand_block(shape, static_cast<int>(state.range(2)));
-  for (int k = 0; k < 5; ++k) s.advance();  // warm caches and the page tables
+  for (int k = 0; k < 5; ++k) s.advance();         // warm caches and the page tables
   static std::set<std::pair<long, long>> printed;  // benchmark calls this once per trial size
   if (std::getenv("FFP_MPM_BENCH_STAGES") && printed.insert({state.range(0) * 10 + threads, state.range(2)}).second)
     print_stage_times(s, (std::string(shape == ShapeFunction::gimp ? "GIMP" : "linear") + ", " +
-                          std::to_string(threads) + " thread(s)").c_str());
+                          std::to_string(threads) + " thread(s)")
+                             .c_str());
   for (auto _ : state) s.advance();
   const double particle_steps = static_cast<double>(state.iterations()) * static_cast<double>(s.particles.size());
   state.counters["particles"] = static_cast<double>(s.particles.size());
@@ -119,7 +119,8 @@ void BM_FfpReferenceStep(benchmark::State& state) {
   for (int k = 0; k < 200; ++k) run.advance();
   for (auto _ : state) run.advance();
   state.counters["particles"] = static_cast<double>(run.simulation().particles.size());
-  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   set_thread_count(previous);
 }
 BENCHMARK(BM_FfpReferenceStep)->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -4,8 +4,8 @@
 #include <map>
 #include <stdexcept>
 
-#include <Eigen/Dense>
 #include <ceres/ceres.h>
+#include <Eigen/Dense>
 
 namespace ffp {
 
@@ -122,8 +122,10 @@ BoundedFit fit_bounded_least_squares(const std::vector<FitParameter>& parameters
   if (residual_count < 1) throw std::invalid_argument("no residual to fit");
   for (const FitParameter& q : parameters) {
     if (!(q.lower < q.upper)) throw std::invalid_argument(q.name + ": lower must be below upper");
-    if (!(q.initial >= q.lower && q.initial <= q.upper)) throw std::invalid_argument(q.name + ": initial is outside its bounds");
-    if (!(q.step > 0.0 && q.step < q.upper - q.lower)) throw std::invalid_argument(q.name + ": step must be > 0 and < upper − lower");
+    if (!(q.initial >= q.lower && q.initial <= q.upper))
+      throw std::invalid_argument(q.name + ": initial is outside its bounds");
+    if (!(q.step > 0.0 && q.step < q.upper - q.lower))
+      throw std::invalid_argument(q.name + ": step must be > 0 and < upper − lower");
   }
   BatchedModel model(parameters, residual_count, evaluate);
   const std::size_t p = parameters.size();

@@ -11,7 +11,8 @@
 namespace ffp {
 
 double LabCurve::peak_q_Pa() const {
-  return deviatoric_stress_Pa.empty() ? 0.0 : *std::max_element(deviatoric_stress_Pa.begin(), deviatoric_stress_Pa.end());
+  return deviatoric_stress_Pa.empty() ? 0.0
+                                      : *std::max_element(deviatoric_stress_Pa.begin(), deviatoric_stress_Pa.end());
 }
 
 double LabCurve::axial_strain_at_peak() const {
@@ -55,7 +56,8 @@ void check(const LabCurve& curve, const std::vector<long>& lines) {
     return curve.source + ":" + (row < lines.size() ? std::to_string(lines[row]) : "row " + std::to_string(row + 1));
   };
   const std::size_t n = curve.axial_strain.size();
-  if (curve.deviatoric_stress_Pa.size() != n || (!curve.volumetric_strain.empty() && curve.volumetric_strain.size() != n))
+  if (curve.deviatoric_stress_Pa.size() != n ||
+      (!curve.volumetric_strain.empty() && curve.volumetric_strain.size() != n))
     throw SceneError(curve.source + ": the columns have different lengths");
   if (n < kMinLabPoints)
     throw SceneError(curve.source + ": has " + std::to_string(n) + " data row(s); a lab curve needs at least " +
@@ -68,7 +70,8 @@ void check(const LabCurve& curve, const std::vector<long>& lines) {
     if (e < 0.0)
       throw SceneError(where(i) + ": axial_strain " + number(e) +
                        " is negative; it must be ≥ 0 (compression positive, from the start of shearing)");
-    if (e > 1.0) throw SceneError(where(i) + ": axial_strain " + number(e) + " is above 1 (a strain, not a percentage)");
+    if (e > 1.0)
+      throw SceneError(where(i) + ": axial_strain " + number(e) + " is above 1 (a strain, not a percentage)");
     if (i > 0 && !(e > curve.axial_strain[i - 1]))
       throw SceneError(where(i) + ": axial_strain " + number(e) + " does not increase on the row before (" +
                        number(curve.axial_strain[i - 1]) + "); it must increase strictly from row to row");

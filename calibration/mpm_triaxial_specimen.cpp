@@ -6,13 +6,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include "models/math_constants.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/stages.hpp"
-#include "models/math_constants.hpp"
 
 namespace ffp {
-
 
 namespace {
 
@@ -105,8 +104,8 @@ void apply_cell_pressure(Simulation& s, const Platens& platens) {
     const double rf = Platens::face_radius(P, p);
     const int c = s.grid.r.cell_of(rf);
     if (c < 0)
-      throw mpm::StepFailure("the specimen's face left the grid at r = " + std::to_string(rf) + " m (t = " +
-                             std::to_string(s.time_s) + " s): widen the radial margin");
+      throw mpm::StepFailure("the specimen's face left the grid at r = " + std::to_string(rf) +
+                             " m (t = " + std::to_string(s.time_s) + " s): widen the radial margin");
     const double lf = 2.0 * P.half_z[p] * std::exp(P.strain[p][1]);
     const double x0 = s.grid.r.coordinate(c), x1 = s.grid.r.coordinate(c + 1);
     const double n0 = (x1 - rf) * s.grid.r.inverse_spacing(c), n1 = (rf - x0) * s.grid.r.inverse_spacing(c);
@@ -184,7 +183,8 @@ std::vector<double> even_nodes(double from, double to, int cells) {
 
 void check(const MpmTriaxialConfig& c) {
   auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string("mpm triaxial: ") + what + " must be > 0");
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw std::invalid_argument(std::string("mpm triaxial: ") + what + " must be > 0");
   };
   positive(c.specimen.height_m, "the specimen height");
   positive(c.specimen.diameter_m, "the specimen diameter");
@@ -317,11 +317,12 @@ MpmTriaxialResult run_mpm_triaxial(const mpm::MaterialLaw& law, const MpmTriaxia
   result.peak_q_Pa = *peak;
   result.axial_strain_at_peak = curve.axial_strain[k_peak];
   for (std::size_t k = 1; k < curve.axial_strain.size(); ++k)
-    result.platen_force_imbalance = std::max(
-        result.platen_force_imbalance, std::abs(curve.deviatoric_stress_Pa[k] - result.bottom_q_Pa[k]) / result.peak_q_Pa);
+    result.platen_force_imbalance =
+        std::max(result.platen_force_imbalance,
+                 std::abs(curve.deviatoric_stress_Pa[k] - result.bottom_q_Pa[k]) / result.peak_q_Pa);
   // The bulge at the sample nearest the peak's strain, and at the end.
-  const std::size_t i_peak = static_cast<std::size_t>(
-      std::lower_bound(e.begin(), e.end(), result.axial_strain_at_peak) - e.begin());
+  const std::size_t i_peak =
+      static_cast<std::size_t>(std::lower_bound(e.begin(), e.end(), result.axial_strain_at_peak) - e.begin());
   const std::size_t i = std::min(i_peak, e.size() - 1);
   result.bulge_at_peak_min = platens.bulge_min[i];
   result.bulge_at_peak_max = platens.bulge_max[i];

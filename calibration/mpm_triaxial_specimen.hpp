@@ -56,14 +56,14 @@
 /// of q and ε_v over ±half a step around it (the first point is the initial
 /// state): it filters what is left of the specimen's axial ringing and keeps
 /// the area (see `MpmTriaxialResult::work_steps_J`).
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <string>
-#include <vector>
-#include <algorithm>
-#include <array>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "calibration/numerical_triaxial.hpp"
 #include "drivers/triaxial_test.hpp"
@@ -75,15 +75,18 @@ namespace ffp {
 enum class PlatenFriction { rough, smooth };
 using PlatenFrictionName = std::pair<PlatenFriction, std::string_view>;
 /// The scene's names of PlatenFriction, in the order messages list them.
-inline constexpr auto kPlatenFrictionNames = std::to_array<PlatenFrictionName>({{PlatenFriction::rough, "rough"}, {PlatenFriction::smooth, "smooth"}});
-inline std::string to_string(PlatenFriction friction) { return std::string(std::ranges::find(kPlatenFrictionNames, friction, &PlatenFrictionName::first)->second); }
+inline constexpr auto kPlatenFrictionNames =
+    std::to_array<PlatenFrictionName>({{PlatenFriction::rough, "rough"}, {PlatenFriction::smooth, "smooth"}});
+inline std::string to_string(PlatenFriction friction) {
+  return std::string(std::ranges::find(kPlatenFrictionNames, friction, &PlatenFrictionName::first)->second);
+}
 
 struct MpmTriaxialConfig {
-  TriaxialSpecimen specimen;         ///< 0.15 m × 0.07 m (the paper's)
-  double cell_m = 0.01;              ///< nominal cell size h (the FFP's 1 cm)
-  double cell_pressure_Pa = 1.72e3;  ///< σ3
-  double axial_strain_max = 0.2;     ///< the test stops at ε_a = this (the lab's last strain)
-  double platen_velocity_m_s = 0.01; ///< after the ramp
+  TriaxialSpecimen specimen;          ///< 0.15 m × 0.07 m (the paper's)
+  double cell_m = 0.01;               ///< nominal cell size h (the FFP's 1 cm)
+  double cell_pressure_Pa = 1.72e3;   ///< σ3
+  double axial_strain_max = 0.2;      ///< the test stops at ε_a = this (the lab's last strain)
+  double platen_velocity_m_s = 0.01;  ///< after the ramp
   PlatenFriction platens = PlatenFriction::rough;
   mpm::ShapeFunction shape_function = mpm::ShapeFunction::gimp;
   double courant = 0.9;
@@ -95,8 +98,8 @@ struct MpmTriaxialConfig {
   /// 0.005, 0.0025 m/s, and at the slowest speed it agrees within 0.4 % with
   /// Cundall damping 0.2 (0.643 J) and pure PIC (0.646 J).
   double flip_fraction = 0.9;
-  double local_damping = 0.0;        ///< Cundall's local damping coefficient (0: none)
-  int particles_per_cell = 2;        ///< per direction
+  double local_damping = 0.0;  ///< Cundall's local damping coefficient (0: none)
+  int particles_per_cell = 2;  ///< per direction
   /// Sets the time scale only (weightless, quasi-static): the sand's γ_d = 14.6 kN/m³.
   double density_kg_m3 = 14.6e3 / 9.81;
   double output_strain_step = 1e-3;  ///< spacing of the curve's points in ε_a
@@ -110,9 +113,9 @@ struct MpmTriaxialResult {
   std::vector<double> bottom_q_Pa;     ///< q from the bottom platen's force (same windows)
   /// A·H ∫ q dε_a over every step (trapezoid per step): what the curve's trapezoid approximates.
   double work_steps_J = 0.0;
-  double work_curve_J = 0.0;           ///< A·H ∫ q dε_a of the output curve (trapezoid on its points)
-  double work_piston_J = 0.0;          ///< ∫F dδ of the piston force over every step
-  double peak_q_Pa = 0.0;              ///< of the output curve
+  double work_curve_J = 0.0;   ///< A·H ∫ q dε_a of the output curve (trapezoid on its points)
+  double work_piston_J = 0.0;  ///< ∫F dδ of the piston force over every step
+  double peak_q_Pa = 0.0;      ///< of the output curve
   double axial_strain_at_peak = 0.0;
   /// max over the output points of |q_top − q_bottom| / peak q: inertia left in the test.
   double platen_force_imbalance = 0.0;
@@ -121,11 +124,11 @@ struct MpmTriaxialResult {
   double bulge_at_end_min = 0.0, bulge_at_end_max = 0.0;
   long steps = 0;
   std::size_t particles = 0;
-  int cells_r = 0, cells_z = 0;        ///< across the specimen (the grid has more radially)
+  int cells_r = 0, cells_z = 0;  ///< across the specimen (the grid has more radially)
   double cell_r_m = 0.0, cell_z_m = 0.0;
   double ramp_time_s = 0.0;
   double wall_time_s = 0.0;
-  long wall_clamps = 0;                ///< particle moves stopped at a wall (should stay 0)
+  long wall_clamps = 0;  ///< particle moves stopped at a wall (should stay 0)
 };
 
 /// Runs one test. Throws std::invalid_argument for a config that is not a

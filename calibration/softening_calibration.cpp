@@ -13,7 +13,6 @@
 
 namespace ffp {
 
-
 double dissipated_work_J(const std::vector<double>& axial_strain, const std::vector<double>& deviatoric_stress_Pa,
                          const TriaxialSpecimen& specimen, double from, double to) {
   // ∫ F dδ with F = qA, δ = ε_a H: the same trapezoid as on the F–δ points, scaled by V = AH.
@@ -108,8 +107,7 @@ class StopWithinWorkTolerance final : public ceres::IterationCallback {
  public:
   explicit StopWithinWorkTolerance(double tolerance) : tolerance_(tolerance) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    return std::sqrt(2.0 * summary.cost) <= tolerance_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
-                                                       : ceres::SOLVER_CONTINUE;
+    return std::sqrt(2.0 * summary.cost) <= tolerance_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }
 
  private:
@@ -201,7 +199,8 @@ class Calibration {
       throw CalibrationFailure("the fit of η failed: " + result.termination);
 
     result.eta = std::exp(x);
-    result.at_bound = std::abs(x - std::log(settings_.eta_min)) < 1e-6 || std::abs(x - std::log(settings_.eta_max)) < 1e-6;
+    result.at_bound =
+        std::abs(x - std::log(settings_.eta_min)) < 1e-6 || std::abs(x - std::log(settings_.eta_max)) < 1e-6;
     result.fitted = evaluate(result.eta);
     result.dissipated_work_model_J = work_of(result.fitted);
     result.relative_work_residual = (result.dissipated_work_model_J - work_lab_) / work_lab_;
@@ -270,13 +269,15 @@ class Calibration {
     const WorkSample& fastest = result.scan.back();
     const std::string bounds = "η ∈ [" + format(settings_.eta_min) + ", " + format(settings_.eta_max) + "]";
     if (work_lab_ > std::max(slowest.work_J, fastest.work_J))
-      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) + " J, more than the model with " +
-                               "the slowest softening, W(η = " + format(slowest.eta) + ") = " + format(slowest.work_J) +
-                               " J: no " + bounds + " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
+      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) +
+                               " J, more than the model with " + "the slowest softening, W(η = " + format(slowest.eta) +
+                               ") = " + format(slowest.work_J) + " J: no " + bounds +
+                               " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
     if (work_lab_ < std::min(slowest.work_J, fastest.work_J))
-      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) + " J, less than the model with " +
-                               "the fastest softening, W(η = " + format(fastest.eta) + ") = " + format(fastest.work_J) +
-                               " J: no " + bounds + " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
+      throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) +
+                               " J, less than the model with " + "the fastest softening, W(η = " + format(fastest.eta) +
+                               ") = " + format(fastest.work_J) + " J: no " + bounds +
+                               " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
     for (std::size_t k = 1; k < result.scan.size(); ++k) {
       const WorkSample& a = result.scan[k - 1];
       const WorkSample& b = result.scan[k];
@@ -289,10 +290,9 @@ class Calibration {
   }
 
   double curve_start(const CalibrationResult& result) const {
-    const auto best = std::min_element(result.scan.begin(), result.scan.end(),
-                                       [](const WorkSample& a, const WorkSample& b) {
-                                         return a.sum_of_squares < b.sum_of_squares;
-                                       });
+    const auto best =
+        std::min_element(result.scan.begin(), result.scan.end(),
+                         [](const WorkSample& a, const WorkSample& b) { return a.sum_of_squares < b.sum_of_squares; });
     return std::log(best->eta);
   }
 
@@ -313,7 +313,8 @@ CalibrationResult calibrate_softening_factor(const LabCurve& lab, const Numerica
   if (!(settings.eta_min > 0.0 && settings.eta_max > settings.eta_min))
     throw std::invalid_argument("calibrate_softening_factor: needs 0 < eta_min < eta_max");
   if (settings.scan_points < 2) throw std::invalid_argument("calibrate_softening_factor: scan_points must be ≥ 2");
-  if (settings.max_iterations < 1) throw std::invalid_argument("calibrate_softening_factor: max_iterations must be ≥ 1");
+  if (settings.max_iterations < 1)
+    throw std::invalid_argument("calibrate_softening_factor: max_iterations must be ≥ 1");
   if (!(settings.derivative_step > 0.0 && settings.derivative_step <= 0.5))
     throw std::invalid_argument("calibrate_softening_factor: derivative_step must be in (0, 0.5]");
   if (!(settings.parameter_tolerance > 0.0 && settings.parameter_tolerance < 1.0))

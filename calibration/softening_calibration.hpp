@@ -24,14 +24,14 @@
 /// stored and by the cell pressure's work on the specimen's volume change
 /// (drivers/triaxial_test.hpp); the result reports the model's plastic work
 /// beside W for comparison.
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <vector>
-#include <algorithm>
-#include <array>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "calibration/lab_curve.hpp"
 #include "calibration/numerical_triaxial.hpp"
@@ -42,8 +42,12 @@ namespace ffp {
 enum class CalibrationMode { dissipated_work, curve_least_squares };
 using CalibrationModeName = std::pair<CalibrationMode, std::string_view>;
 /// The scene's names of CalibrationMode, in the order messages list them.
-inline constexpr auto kCalibrationModeNames = std::to_array<CalibrationModeName>({{CalibrationMode::dissipated_work, "dissipated_work"}, {CalibrationMode::curve_least_squares, "curve_least_squares"}});
-inline std::string to_string(CalibrationMode mode) { return std::string(std::ranges::find(kCalibrationModeNames, mode, &CalibrationModeName::first)->second); }
+inline constexpr auto kCalibrationModeNames =
+    std::to_array<CalibrationModeName>({{CalibrationMode::dissipated_work, "dissipated_work"},
+                                        {CalibrationMode::curve_least_squares, "curve_least_squares"}});
+inline std::string to_string(CalibrationMode mode) {
+  return std::string(std::ranges::find(kCalibrationModeNames, mode, &CalibrationModeName::first)->second);
+}
 
 struct CalibrationSettings {
   CalibrationMode mode = CalibrationMode::dissipated_work;
@@ -52,8 +56,8 @@ struct CalibrationSettings {
   /// Where Ceres starts. Unset: from the scan — where its W crosses W_lab
   /// (log-linear), or its point of least squares for the curve criterion.
   std::optional<double> eta_start;
-  int scan_points = 9;        ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
-  int max_iterations = 50;    ///< Ceres iterations
+  int scan_points = 9;      ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
+  int max_iterations = 50;  ///< Ceres iterations
   /// Step in ln η of the central differences. It must be large enough that the
   /// numerical triaxial's noise is small against W'·step: the element test's W is
   /// smooth to ~1e-10 (1e-4 is plenty); a dynamic MPM specimen's W jitters from
@@ -75,28 +79,28 @@ struct CalibrationSettings {
 
 struct WorkSample {
   double eta = 0.0;
-  double work_J = 0.0;         ///< W_model(η) over the lab's range
-  double sum_of_squares = 0.0; ///< Σ r_i² of the curve criterion at this η
+  double work_J = 0.0;          ///< W_model(η) over the lab's range
+  double sum_of_squares = 0.0;  ///< Σ r_i² of the curve criterion at this η
 };
 
 struct CalibrationResult {
   CalibrationMode mode = CalibrationMode::dissipated_work;
   double eta = 0.0;
   double dissipated_work_lab_J = 0.0;
-  double dissipated_work_model_J = 0.0;     ///< at the fitted η, over the lab's range
-  double relative_work_residual = 0.0;      ///< (W_model − W_lab) / W_lab at the fitted η
-  double plastic_work_model_J = 0.0;        ///< the law's V Σ σ:Δε^p at the fitted η (NaN if unknown)
-  double rms_q_error_Pa = 0.0;              ///< model against lab at the lab's strains
+  double dissipated_work_model_J = 0.0;         ///< at the fitted η, over the lab's range
+  double relative_work_residual = 0.0;          ///< (W_model − W_lab) / W_lab at the fitted η
+  double plastic_work_model_J = 0.0;            ///< the law's V Σ σ:Δε^p at the fitted η (NaN if unknown)
+  double rms_q_error_Pa = 0.0;                  ///< model against lab at the lab's strains
   double displacement_range_m[2] = {0.0, 0.0};  ///< the lab's δ range both works cover
-  int iterations = 0;                       ///< Ceres iterations (successful + unsuccessful steps)
-  int model_runs = 0;                       ///< numerical triaxials run, scan and derivatives included
-  std::string termination;                  ///< Ceres' termination type and message
-  bool converged = false;                   ///< Ceres reported CONVERGENCE (or the work tolerance was met)
-  bool at_bound = false;                    ///< η within 1e-6 (relative) of η_min or η_max
-  double wall_time_s = 0.0;                 ///< the whole calibration, scan included
-  std::vector<WorkSample> scan;             ///< W(η) on the log-spaced scan
-  bool work_decreases_with_eta = false;     ///< W strictly decreasing along the scan
-  SpecimenCurve fitted;                     ///< the response at the fitted η
+  int iterations = 0;                           ///< Ceres iterations (successful + unsuccessful steps)
+  int model_runs = 0;                           ///< numerical triaxials run, scan and derivatives included
+  std::string termination;                      ///< Ceres' termination type and message
+  bool converged = false;                       ///< Ceres reported CONVERGENCE (or the work tolerance was met)
+  bool at_bound = false;                        ///< η within 1e-6 (relative) of η_min or η_max
+  double wall_time_s = 0.0;                     ///< the whole calibration, scan included
+  std::vector<WorkSample> scan;                 ///< W(η) on the log-spaced scan
+  bool work_decreases_with_eta = false;         ///< W strictly decreasing along the scan
+  SpecimenCurve fitted;                         ///< the response at the fitted η
 };
 
 /// The calibration cannot be done as asked (W_lab outside the bounds' range, the

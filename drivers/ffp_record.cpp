@@ -35,7 +35,8 @@ double strain_rate_factor(const RateCorrection& c, double v, double v_ref, doubl
 
 double TipAreas::projected_m2(double depth_m) const {
   if (depth_m <= 0.0) return 0.0;
-  const double r = cone_height_m > 0.0 ? base_radius_m * std::min(depth_m, cone_height_m) / cone_height_m : base_radius_m;
+  const double r =
+      cone_height_m > 0.0 ? base_radius_m * std::min(depth_m, cone_height_m) / cone_height_m : base_radius_m;
   return kPi * r * r;
 }
 
@@ -65,8 +66,9 @@ void check_record_channel(const std::vector<double>& t, const std::vector<double
   for (std::size_t k = 0; k < steps.size(); ++k)
     if (steps[k] > max_gap_ratio * median) {
       char buffer[160];
-      std::snprintf(buffer, sizeof buffer, ": a gap of %.3g s after the row before, %.3g times the median sampling interval %.3g s",
-                    steps[k], steps[k] / median, median);
+      std::snprintf(buffer, sizeof buffer,
+                    ": a gap of %.3g s after the row before, %.3g times the median sampling interval %.3g s", steps[k],
+                    steps[k] / median, median);
       throw RecordError("column 'time_s', " + row_name(k + 1, t) + buffer);
     }
   if (full_scale) {
@@ -88,9 +90,10 @@ void check_record_channel(const std::vector<double>& t, const std::vector<double
     std::size_t end = k;
     while (end < v.size() && v[end] == top) ++end;
     if (end - k >= kFlatTop && k > 0 && end < v.size())
-      throw RecordError("column '" + col + "', " + row_name(k, t) + ": " + std::to_string(end - k) +
-                        " equal samples at the record's maximum " + std::to_string(top) +
-                        ": the channel looks saturated (give sensor_range_g or sensor_range_m_s2 for the true full scale)");
+      throw RecordError(
+          "column '" + col + "', " + row_name(k, t) + ": " + std::to_string(end - k) +
+          " equal samples at the record's maximum " + std::to_string(top) +
+          ": the channel looks saturated (give sensor_range_g or sensor_range_m_s2 for the true full scale)");
     k = end;
   }
 }
@@ -100,10 +103,11 @@ std::size_t detect_impact(const std::vector<double>& d, double threshold_g) {
   if (first == d.end()) {
     const double top = d.empty() ? 0.0 : *std::max_element(d.begin(), d.end());
     char buffer[200];
-    std::snprintf(buffer, sizeof buffer,
-                  "no impact found: the net deceleration never exceeds impact_threshold_g = %g (its maximum is %.4g g); "
-                  "give a lower impact_threshold_g or the impact_time_s",
-                  threshold_g, top);
+    std::snprintf(
+        buffer, sizeof buffer,
+        "no impact found: the net deceleration never exceeds impact_threshold_g = %g (its maximum is %.4g g); "
+        "give a lower impact_threshold_g or the impact_time_s",
+        threshold_g, top);
     throw RecordError(buffer);
   }
   // Back to where the pulse begins to rise: before it the body falls (−1 g) or rests (0 g).
@@ -112,19 +116,22 @@ std::size_t detect_impact(const std::vector<double>& d, double threshold_g) {
   return k;
 }
 
-InterpretedRecord interpret_record(const std::vector<double>& t, const std::vector<double>& d, const RecordSettings& s) {
+InterpretedRecord interpret_record(const std::vector<double>& t, const std::vector<double>& d,
+                                   const RecordSettings& s) {
   InterpretedRecord out;
   const double g = s.gravity_m_s2, M = s.mass_kg;
   if (s.impact_time_s) {
-    const auto at = std::lower_bound(t.begin(), t.end(), *s.impact_time_s - 1e-12 * std::max(1.0, std::abs(*s.impact_time_s)));
+    const auto at =
+        std::lower_bound(t.begin(), t.end(), *s.impact_time_s - 1e-12 * std::max(1.0, std::abs(*s.impact_time_s)));
     if (at == t.end() || at + 1 == t.end())
-      throw RecordError("impact_time_s = " + std::to_string(*s.impact_time_s) + " is at or after the record's last sample (" +
-                        std::to_string(t.back()) + " s)");
+      throw RecordError("impact_time_s = " + std::to_string(*s.impact_time_s) +
+                        " is at or after the record's last sample (" + std::to_string(t.back()) + " s)");
     out.impact_index = static_cast<std::size_t>(at - t.begin());
     out.impact_detected = false;
   } else {
     out.impact_index = detect_impact(d, s.impact_threshold_g);
-    if (out.impact_index + 1 >= t.size()) throw RecordError("the impact is at the record's last sample: nothing to interpret");
+    if (out.impact_index + 1 >= t.size())
+      throw RecordError("the impact is at the record's last sample: nothing to interpret");
   }
   const std::size_t k0 = out.impact_index;
   out.impact_time_s = t[k0];
@@ -149,7 +156,8 @@ InterpretedRecord interpret_record(const std::vector<double>& t, const std::vect
     z += 0.5 * (v + v_next) * dt;
     v = v_next;
     // Soil bearing force (BlueDrop's air/water drop): F = m a + m g − ρ V g − ½ ρ C_D A v², a = g·d up.
-    const double force_N = M * g * (d[k] + 1.0) - buoyancy_N - 0.5 * s.fluid_density_kg_m3 * s.drag_coefficient * frontal_m2 * v * v;
+    const double force_N =
+        M * g * (d[k] + 1.0) - buoyancy_N - 0.5 * s.fluid_density_kg_m3 * s.drag_coefficient * frontal_m2 * v * v;
     const double projected = s.tip.projected_m2(z), mantle = s.tip.mantle_m2(z);
     // q_dyn = F / A_contact; at a contact area of zero (the body back out of the soil) q is 0.
     const double q_projected = projected > 0.0 ? 1e-3 * force_N / projected : 0.0;

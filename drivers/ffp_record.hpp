@@ -10,16 +10,16 @@
 /// Sign conventions: depth and velocity + down; the net deceleration
 /// (R − M g)/(M g) + while it slows a downward motion (the `ffp` history's
 /// deceleration_g), so free fall reads −1 and rest on the soil reads 0.
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <vector>
-#include <algorithm>
-#include <array>
 #include <utility>
+#include <vector>
 
 namespace ffp {
 
@@ -64,8 +64,11 @@ struct TipAreas {
 enum class DropMedium : std::uint8_t { air, water };
 using DropMediumName = std::pair<DropMedium, std::string_view>;
 /// The scene's names of DropMedium, in the order messages list them.
-inline constexpr auto kDropMediumNames = std::to_array<DropMediumName>({{DropMedium::air, "air"}, {DropMedium::water, "water"}});
-inline std::string to_string(DropMedium medium) { return std::string(std::ranges::find(kDropMediumNames, medium, &DropMediumName::first)->second); }
+inline constexpr auto kDropMediumNames =
+    std::to_array<DropMediumName>({{DropMedium::air, "air"}, {DropMedium::water, "water"}});
+inline std::string to_string(DropMedium medium) {
+  return std::string(std::ranges::find(kDropMediumNames, medium, &DropMediumName::first)->second);
+}
 
 struct RecordSettings {
   double mass_kg = 7.71;
@@ -75,19 +78,19 @@ struct RecordSettings {
   std::optional<double> impact_time_s;        ///< absent: detected by impact_threshold_g
   double impact_threshold_g = 1.0;            ///< the pulse that first exceeds this net deceleration is the impact
   DropMedium medium = DropMedium::air;
-  double fluid_density_kg_m3 = 1.2;  ///< air 1.2, sea water 1020 (BlueDrop's default)
-  double drag_coefficient = 0.0;     ///< on the frontal area π R²; 0 leaves drag out
-  double volume_m3 = 0.0;            ///< the penetrometer's, for buoyancy in water
+  double fluid_density_kg_m3 = 1.2;      ///< air 1.2, sea water 1020 (BlueDrop's default)
+  double drag_coefficient = 0.0;         ///< on the frontal area π R²; 0 leaves drag out
+  double volume_m3 = 0.0;                ///< the penetrometer's, for buoyancy in water
   double reference_velocity_m_s = 0.02;  ///< v_ref of the rate laws: the standard CPT rate
-  bool q_sbc_on_mantle = false;      ///< q_sbc from q_dyn on the mantle area (default: projected)
+  bool q_sbc_on_mantle = false;          ///< q_sbc from q_dyn on the mantle area (default: projected)
   std::vector<RateCorrection> rate_laws;
 };
 
 struct InterpretedRecord {
-  std::size_t impact_index = 0;       ///< sample of the impact in the input
+  std::size_t impact_index = 0;  ///< sample of the impact in the input
   double impact_time_s = 0.0;
-  double impact_velocity_m_s = 0.0;   ///< + down
-  bool impact_detected = true;        ///< false: impact_time_s was given
+  double impact_velocity_m_s = 0.0;         ///< + down
+  bool impact_detected = true;              ///< false: impact_time_s was given
   bool impact_velocity_integrated = false;  ///< true: from rest at the first sample (release)
   /// One row per sample after the impact (the first has a contact area > 0).
   std::vector<double> time_s, penetration_m, velocity_m_s, deceleration_g;
@@ -102,8 +105,8 @@ struct InterpretedRecord {
 /// `full_scale` a sample at or beyond ±full_scale is saturated; without it, a
 /// flat top (at least 5 equal samples at the channel's maximum with lower
 /// samples on both sides) is. Throws RecordError.
-void check_record_channel(const std::vector<double>& time_s, const std::vector<double>& values,
-                          std::string_view column, std::optional<double> full_scale, double max_gap_ratio = 5.0);
+void check_record_channel(const std::vector<double>& time_s, const std::vector<double>& values, std::string_view column,
+                          std::optional<double> full_scale, double max_gap_ratio = 5.0);
 
 /// The sample where the impact pulse starts: the start of the rise that first
 /// exceeds `threshold_g`. Throws RecordError when no sample does.

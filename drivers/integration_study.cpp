@@ -76,8 +76,8 @@ TriaxialErrorResult run_triaxial_error_study(const TriaxialErrorStudy& study,
                                              const std::function<void(const std::string&)>& on_stage) {
   TriaxialErrorResult result;
   auto config_for = [&](int n) {
-    return drained_triaxial_config(study.law, study.cell_pressure_Pa, study.axial_strain_max,
-                                   study.strain_rate_per_s, n);
+    return drained_triaxial_config(study.law, study.cell_pressure_Pa, study.axial_strain_max, study.strain_rate_per_s,
+                                   n);
   };
   if (on_stage) on_stage("reference, " + std::to_string(study.reference_increments) + " increments");
   const auto reference_start = Clock::now();
@@ -123,7 +123,6 @@ TriaxialErrorResult run_triaxial_error_study(const TriaxialErrorStudy& study,
   return result;
 }
 
-
 IsoErrorMap run_iso_error_map(const IsoErrorMapStudy& study) {
   const ElasticConstants& elastic = elastic_constants(study.law);
   const MaterialState state = initial_state(study.law);
@@ -136,8 +135,8 @@ IsoErrorMap run_iso_error_map(const IsoErrorMapStudy& study) {
   const double minor = study.confining_Pa;
   const double major = minor * n_phi + 2.0 * cohesion * std::sqrt(n_phi);
   Voigt edge = Voigt::Zero(), plane = Voigt::Zero();
-  edge << -minor, -major, -minor, 0, 0, 0;                          // triaxial compression at failure
-  plane << -minor, -major, -0.5 * (minor + major), 0, 0, 0;         // σ2 midway: on the face
+  edge << -minor, -major, -minor, 0, 0, 0;                   // triaxial compression at failure
+  plane << -minor, -major, -0.5 * (minor + major), 0, 0, 0;  // σ2 midway: on the face
   Voigt start = Voigt::Zero();
   if (study.start == MapStart::edge) start = edge;
   if (study.start == MapStart::plane) start = plane;
@@ -157,8 +156,7 @@ IsoErrorMap run_iso_error_map(const IsoErrorMapStudy& study) {
   along /= deviatoric_strain(along);
   across /= deviatoric_strain(across);
 
-  for (int i = 0; i < study.points_x; ++i)
-    map.x.push_back(study.max_multiple * i / std::max(study.points_x - 1, 1));
+  for (int i = 0; i < study.points_x; ++i) map.x.push_back(study.max_multiple * i / std::max(study.points_x - 1, 1));
   for (int j = 0; j < study.points_y; ++j)
     map.y.push_back(-study.max_multiple + 2.0 * study.max_multiple * j / std::max(study.points_y - 1, 1));
   for (double y : map.y) {

@@ -8,13 +8,13 @@
 /// 2. Iso-error maps: from a stress on the yield surface (plane, edge or apex),
 ///    one increment of size (x, y)·ε_y in two deviatoric directions, against the
 ///    same increment cut into many substeps.
-#include <functional>
-#include <string>
-#include <vector>
 #include <algorithm>
 #include <array>
+#include <functional>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "drivers/point_integrator.hpp"
 
@@ -32,14 +32,14 @@ struct TriaxialErrorStudy {
 
 struct TriaxialErrorRow {
   int increments = 0;
-  double wall_time_s = 0.0;          ///< one run (mean over the repeats)
-  double q_error = 0.0;              ///< at the end of the path: |q − q_ref| / peak q_ref
-  double volumetric_error = 0.0;     ///< at the end of the path: |ε_v − ε_v,ref| / max |ε_v,ref|
+  double wall_time_s = 0.0;       ///< one run (mean over the repeats)
+  double q_error = 0.0;           ///< at the end of the path: |q − q_ref| / peak q_ref
+  double volumetric_error = 0.0;  ///< at the end of the path: |ε_v − ε_v,ref| / max |ε_v,ref|
   /// Over the whole path, the run's curve (linear between its increments) against
   /// the reference at every reference point: includes missing the peak between increments.
   double q_error_path = 0.0;
   double volumetric_error_path = 0.0;
-  double peak_q_error = 0.0;         ///< |peak q − peak q_ref| / peak q_ref
+  double peak_q_error = 0.0;  ///< |peak q − peak q_ref| / peak q_ref
   double peak_q_kPa = 0.0;
 };
 
@@ -61,8 +61,11 @@ TriaxialErrorResult run_triaxial_error_study(const TriaxialErrorStudy& study,
 enum class MapStart { plane, edge, apex };
 using MapStartName = std::pair<MapStart, std::string_view>;
 /// The starts' names (output files iso_error_<law>_<start>.csv), in the order they run.
-inline constexpr auto kMapStartNames = std::to_array<MapStartName>({{MapStart::plane, "plane"}, {MapStart::edge, "edge"}, {MapStart::apex, "apex"}});
-inline std::string to_string(MapStart start) { return std::string(std::ranges::find(kMapStartNames, start, &MapStartName::first)->second); }
+inline constexpr auto kMapStartNames =
+    std::to_array<MapStartName>({{MapStart::plane, "plane"}, {MapStart::edge, "edge"}, {MapStart::apex, "apex"}});
+inline std::string to_string(MapStart start) {
+  return std::string(std::ranges::find(kMapStartNames, start, &MapStartName::first)->second);
+}
 
 struct IsoErrorMapStudy {
   PointLaw law = LinearElastic(ElasticConstants{});

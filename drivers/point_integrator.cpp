@@ -68,9 +68,17 @@ class MixedStep {
             const PointRecord& start, const std::array<int, 6>& stress_components, int stress_count,
             const Voigt& prescribed_strain_increment, const Voigt& target_stress, double dt,
             const NewtonSettings& newton)
-      : law_(law), elastic_(elastic), stiffness_(stiffness), start_(start), components_(stress_components),
-        count_(stress_count), prescribed_(prescribed_strain_increment), target_(target_stress), dt_(dt),
-        newton_(newton), elastic_block_(stress_count, stress_count) {
+      : law_(law),
+        elastic_(elastic),
+        stiffness_(stiffness),
+        start_(start),
+        components_(stress_components),
+        count_(stress_count),
+        prescribed_(prescribed_strain_increment),
+        target_(target_stress),
+        dt_(dt),
+        newton_(newton),
+        elastic_block_(stress_count, stress_count) {
     for (int a = 0; a < count_; ++a)
       for (int b = 0; b < count_; ++b) elastic_block_(a, b) = stiffness_(components_[a], components_[b]);
   }
@@ -230,8 +238,8 @@ PointHistory integrate_point(const PointConfig& config, const std::function<void
       } else {
         const MixedStep mixed(config.law, elastic, stiffness, current, stress_components, stress_count,
                               strain_increment, target_stress, dt, config.newton);
-        MixedStep::Outcome outcome = mixed.solve(
-            previous_solution.size() == stress_count ? previous_solution : mixed.elastic_guess(1.0), 1.0);
+        MixedStep::Outcome outcome =
+            mixed.solve(previous_solution.size() == stress_count ? previous_solution : mixed.elastic_guess(1.0), 1.0);
         iterations = outcome.iterations;
         // Continuation when Newton cannot find the step from afar (e.g. a trial
         // deep in the apex region, where the response is flat): solve the same
@@ -246,8 +254,9 @@ PointHistory integrate_point(const PointConfig& config, const std::function<void
           for (int part = 1; part <= parts && followed; ++part) {
             const double f = static_cast<double>(part) / parts;
             const SmallVector guess =
-                part <= 2 ? mixed.elastic_guess(f)
-                          : SmallVector(last + (f - last_fraction) / (last_fraction - before_fraction) * (last - before));
+                part <= 2
+                    ? mixed.elastic_guess(f)
+                    : SmallVector(last + (f - last_fraction) / (last_fraction - before_fraction) * (last - before));
             outcome = mixed.solve(guess, f);
             iterations += outcome.iterations;
             followed = outcome.converged;
@@ -259,11 +268,10 @@ PointHistory integrate_point(const PointConfig& config, const std::function<void
         }
         if (!outcome.converged) {
           std::ostringstream message;
-          message << "point integrator: increment " << step << " (segment " << segment_index + 1 << ", " << k
-                  << " of " << segment.increments << ") did not converge in " << config.newton.max_iterations
-                  << " Newton iterations, with continuation: stress residual " << outcome.residual
-                  << " Pa > tolerance " << outcome.tolerance
-                  << " Pa (a stress target beyond the strength, or a path the law cannot follow)";
+          message << "point integrator: increment " << step << " (segment " << segment_index + 1 << ", " << k << " of "
+                  << segment.increments << ") did not converge in " << config.newton.max_iterations
+                  << " Newton iterations, with continuation: stress residual " << outcome.residual << " Pa > tolerance "
+                  << outcome.tolerance << " Pa (a stress target beyond the strength, or a path the law cannot follow)";
           PointIntegrationFailure failure(message.str());
           failure.step = step;
           failure.segment = static_cast<int>(segment_index);

@@ -49,7 +49,7 @@ struct PointConfig {
   MaterialState initial_state;  ///< must hold the law's alternative (see initial_state(law))
   std::vector<PathSegment> segments;
   NewtonSettings newton;
-  long record_every = 1;     ///< keep every n-th increment (the last one always)
+  long record_every = 1;  ///< keep every n-th increment (the last one always)
 };
 
 /// The point after an increment.
@@ -79,8 +79,8 @@ class PointIntegrationFailure : public std::runtime_error {
  public:
   PointIntegrationFailure(const std::string& message) : std::runtime_error(message) {}
 
-  long step = 0;     ///< 1-based increment that failed
-  int segment = 0;   ///< 0-based path segment
+  long step = 0;    ///< 1-based increment that failed
+  int segment = 0;  ///< 0-based path segment
   Voigt stress_start = Voigt::Zero();
   Voigt strain_start = Voigt::Zero();
   MaterialState state_start;
@@ -93,7 +93,6 @@ class PointIntegrationFailure : public std::runtime_error {
 };
 
 /// `on_step(done, total)` is called after each increment (progress, Ctrl-C).
-PointHistory integrate_point(const PointConfig& config,
-                             const std::function<void(long done, long total)>& on_step = {});
+PointHistory integrate_point(const PointConfig& config, const std::function<void(long done, long total)>& on_step = {});
 
 }  // namespace ffp

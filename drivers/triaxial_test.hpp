@@ -44,7 +44,7 @@ struct TriaxialTestConfig {
   double cell_pressure_Pa = 1.72e3;  ///< σ3 > 0 (compression), the paper's 10.5 cm depth
   double axial_strain_max = 0.2;     ///< compression positive
   int increments = 1000;
-  double strain_rate_per_s = 1e-4;   ///< only the rate law sees it (quasi-static default)
+  double strain_rate_per_s = 1e-4;  ///< only the rate law sees it (quasi-static default)
   TriaxialSpecimen specimen;
   NewtonSettings newton;
 };

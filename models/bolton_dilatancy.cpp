@@ -6,7 +6,7 @@
 namespace ffp {
 
 double bolton_dilatancy_index(double relative_density, double mean_pressure_kPa) {
-  constexpr double kMaxIndex = 4.0;  // Bolton (1986): I_R ≤ 4
+  constexpr double kMaxIndex = 4.0;         // Bolton (1986): I_R ≤ 4
   if (relative_density <= 0.0) return 0.0;  // I_R = −1 before clamping, whatever p' is
   if (!(mean_pressure_kPa > 0.0)) return kMaxIndex;
   // Paper eq. 5 (Bolton 1986 with Q = 10, R = 1).

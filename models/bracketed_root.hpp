@@ -8,8 +8,8 @@
 namespace ffp {
 
 struct BracketedRoot {
-  double x = 0.0;       ///< the last iterate
-  double f = 0.0;       ///< f(x): the last evaluation of f was at x
+  double x = 0.0;  ///< the last iterate
+  double f = 0.0;  ///< f(x): the last evaluation of f was at x
   bool converged = false;
 };
 

@@ -7,9 +7,9 @@ namespace ffp {
 
 /// φ'_p(ε̇) = φ'_p,ref (1 + α_φ log10(ε̇/ε̇_ref)) for ε̇ > ε̇_ref, else φ'_p,ref.
 struct FrictionRateLaw {
-  double alpha_phi = 0.0;                               ///< 0: rate independent
-  double reference_strain_rate_per_s = 1e-5;            ///< ε̇_ref
-  int smoothing_increments = 1;                         ///< N: ε̇ averaged over about N increments
+  double alpha_phi = 0.0;                              ///< 0: rate independent
+  double reference_strain_rate_per_s = 1e-5;           ///< ε̇_ref
+  int smoothing_increments = 1;                        ///< N: ε̇ averaged over about N increments
   double max_friction_angle_rad = 1.2217304763960306;  ///< cap (70°) so tan φ stays finite
 
   /// The peak friction angle at deviatoric strain rate ε̇ (capped, never below the reference).

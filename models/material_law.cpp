@@ -30,7 +30,8 @@ MaterialLaw make_law(const MaterialParameters& parameters) {
 
 double at_rest_k0(const MaterialParameters& parameters) {
   if (const auto* mc = std::get_if<MohrCoulombParameters>(&parameters)) return 1.0 - std::sin(mc->friction_angle_rad);
-  if (const auto* ss = std::get_if<StrainSofteningParameters>(&parameters)) return 1.0 - std::sin(ss->friction_peak_rad);
+  if (const auto* ss = std::get_if<StrainSofteningParameters>(&parameters))
+    return 1.0 - std::sin(ss->friction_peak_rad);
   const double nu = std::get<ElasticConstants>(parameters).poisson_ratio;
   return nu / (1.0 - nu);
 }
@@ -62,16 +63,13 @@ MaterialState initial_state(const MaterialLaw& law) {
 }
 
 MaterialStates initial_states(const MaterialLaw& law, std::size_t count) {
-  return std::visit(
-      [count](const auto& l) -> MaterialStates { return std::vector<StateOf<decltype(l)>>(count); }, law);
+  return std::visit([count](const auto& l) -> MaterialStates { return std::vector<StateOf<decltype(l)>>(count); }, law);
 }
 
 ReturnRegion update(const MaterialLaw& law, Voigt& stress, const Voigt& strain_increment, MaterialState& state,
                     double dt_s) {
   return std::visit(
-      [&](const auto& l) {
-        return l.update(stress, strain_increment, std::get<StateOf<decltype(l)>>(state), dt_s);
-      },
+      [&](const auto& l) { return l.update(stress, strain_increment, std::get<StateOf<decltype(l)>>(state), dt_s); },
       law);
 }
 
@@ -114,7 +112,9 @@ std::optional<MohrCoulombParameters> mohr_coulomb_strength(const MaterialLaw& la
   return std::visit(
       [&](const auto& l) -> std::optional<MohrCoulombParameters> {
         const auto& s = std::get<StateOf<decltype(l)>>(state);
-        if constexpr (requires { { l.current_strength(s, mean_pressure_Pa) } -> std::same_as<MohrCoulombParameters>; }) {
+        if constexpr (requires {
+                        { l.current_strength(s, mean_pressure_Pa) } -> std::same_as<MohrCoulombParameters>;
+                      }) {
           return l.current_strength(s, mean_pressure_Pa);
         } else {
           return std::nullopt;

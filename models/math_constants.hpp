@@ -6,7 +6,7 @@
 namespace ffp {
 
 inline constexpr double kPi = std::numbers::pi;
-inline constexpr double kTwoPi = 2.0 * std::numbers::pi;  ///< an axisymmetric slice's full turn
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;     ///< an axisymmetric slice's full turn
 inline constexpr double kDegree = std::numbers::pi / 180.0;  ///< one degree in radians: φ_rad = φ_deg · kDegree
 
 }  // namespace ffp

@@ -36,8 +36,7 @@ class PrincipalStresses {
       // Mohr's circle backwards: centre m, radius r, the same 2θ.
       const double centre = 0.5 * (v[slot_major_in_plane_] + v[slot_minor_in_plane_]);
       const double radius = 0.5 * (v[slot_major_in_plane_] - v[slot_minor_in_plane_]);
-      out << centre + radius * cos_2theta_, centre - radius * cos_2theta_, v[slot_33_], radius * sin_2theta_, 0.0,
-          0.0;
+      out << centre + radius * cos_2theta_, centre - radius * cos_2theta_, v[slot_33_], radius * sin_2theta_, 0.0, 0.0;
       return out;
     }
     // σ_ij = Σ_k σ_k n_ik n_jk
@@ -111,8 +110,8 @@ class PrincipalStresses {
   static void rotate(Eigen::Matrix3d& b, Eigen::Matrix3d& v, int p, int q) {
     if (b(p, q) == 0.0) return;
     const double tau = (b(q, q) - b(p, p)) / (2.0 * b(p, q));
-    const double t = std::abs(tau) > 1e150 ? 0.5 / tau
-                                           : (tau >= 0.0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1.0 + tau * tau));
+    const double t =
+        std::abs(tau) > 1e150 ? 0.5 / tau : (tau >= 0.0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1.0 + tau * tau));
     const double c = 1.0 / std::sqrt(1.0 + t * t);
     const double s = t * c;
     Eigen::Matrix3d j = Eigen::Matrix3d::Identity();

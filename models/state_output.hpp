@@ -20,10 +20,14 @@ enum class OutputUnit : unsigned char { none, radian, per_second };
 /// The output's name without a unit suffix ("friction_angle").
 constexpr std::string_view name(StateOutput output) {
   switch (output) {
-    case StateOutput::plastic_deviatoric_strain: return "plastic_deviatoric_strain";
-    case StateOutput::friction_angle: return "friction_angle";
-    case StateOutput::dilatancy_angle: return "dilatancy_angle";
-    case StateOutput::strain_rate: return "strain_rate";
+    case StateOutput::plastic_deviatoric_strain:
+      return "plastic_deviatoric_strain";
+    case StateOutput::friction_angle:
+      return "friction_angle";
+    case StateOutput::dilatancy_angle:
+      return "dilatancy_angle";
+    case StateOutput::strain_rate:
+      return "strain_rate";
   }
   return "";
 }
@@ -31,9 +35,12 @@ constexpr std::string_view name(StateOutput output) {
 constexpr OutputUnit unit(StateOutput output) {
   switch (output) {
     case StateOutput::friction_angle:
-    case StateOutput::dilatancy_angle: return OutputUnit::radian;
-    case StateOutput::strain_rate: return OutputUnit::per_second;
-    default: return OutputUnit::none;
+    case StateOutput::dilatancy_angle:
+      return OutputUnit::radian;
+    case StateOutput::strain_rate:
+      return OutputUnit::per_second;
+    default:
+      return OutputUnit::none;
   }
 }
 

@@ -13,8 +13,7 @@ namespace ffp {
 StrainSofteningMohrCoulomb::StrainSofteningMohrCoulomb(const StrainSofteningParameters& parameters)
     : parameters_(parameters), stiffness_(PrincipalStiffness::of(parameters.elastic)) {}
 
-StrainSofteningMohrCoulomb::Peaks StrainSofteningMohrCoulomb::peaks(const State& state,
-                                                                    double mean_pressure_Pa) const {
+StrainSofteningMohrCoulomb::Peaks StrainSofteningMohrCoulomb::peaks(const State& state, double mean_pressure_Pa) const {
   const StrainSofteningParameters& p = parameters_;
   Peaks out;
   out.friction_rad = p.rate.peak_friction_rad(p.friction_peak_rad, state.strain_rate_per_s);
@@ -35,8 +34,7 @@ MohrCoulombStrength StrainSofteningMohrCoulomb::strength(const Peaks& peaks, dou
   return MohrCoulombStrength::of(phi, std::min(psi, phi), cohesion);
 }
 
-MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& state,
-                                                                    double mean_pressure_Pa) const {
+MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& state, double mean_pressure_Pa) const {
   const Peaks pk = peaks(state, mean_pressure_Pa);
   const double decay = std::exp(-parameters_.softening_factor * state.plastic_deviatoric_strain);
   const MohrCoulombStrength s = strength(pk, decay);
@@ -50,10 +48,14 @@ MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& 
 
 double StrainSofteningMohrCoulomb::output(const State& state, double mean_pressure_Pa, StateOutput output) const {
   switch (output) {
-    case StateOutput::plastic_deviatoric_strain: return state.plastic_deviatoric_strain;
-    case StateOutput::friction_angle: return current_strength(state, mean_pressure_Pa).friction_angle_rad;
-    case StateOutput::dilatancy_angle: return current_strength(state, mean_pressure_Pa).dilatancy_angle_rad;
-    case StateOutput::strain_rate: return state.strain_rate_per_s;
+    case StateOutput::plastic_deviatoric_strain:
+      return state.plastic_deviatoric_strain;
+    case StateOutput::friction_angle:
+      return current_strength(state, mean_pressure_Pa).friction_angle_rad;
+    case StateOutput::dilatancy_angle:
+      return current_strength(state, mean_pressure_Pa).dilatancy_angle_rad;
+    case StateOutput::strain_rate:
+      return state.strain_rate_per_s;
   }
   return 0.0;
 }
@@ -88,7 +90,9 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     correction.array() -= correction.mean();
     return deviatoric_compliance * correction.norm();
   };
-  auto residual = [&](double increment) { return plastic_strain(decay_start * std::exp(-eta * increment)) - increment; };
+  auto residual = [&](double increment) {
+    return plastic_strain(decay_start * std::exp(-eta * increment)) - increment;
+  };
 
   double low = 0.0;
   double residual_low = plastic_strain(decay_start);
@@ -103,12 +107,13 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
       residual_high = residual(high);
     }
     // Δκ to 1e-12 relative, but never finer than the rounding of g itself.
-    const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance *
-                            trial_values.cwiseAbs().maxCoeff();
+    const double rounding =
+        8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance * trial_values.cwiseAbs().maxCoeff();
     const double tolerance = 1e-12 * high + rounding;
-    accepted = illinois_root(residual, high, residual_high, low, residual_low, tolerance,
-                             [tolerance](double) { return tolerance; }, 200)
-                   .x;
+    accepted =
+        illinois_root(
+            residual, high, residual_high, low, residual_low, tolerance, [tolerance](double) { return tolerance; }, 200)
+            .x;
   }
   state.plastic_deviatoric_strain += accepted;
   // `returned` and `region` are those of the last evaluation, at the accepted Δκ.

@@ -28,8 +28,8 @@ namespace ffp {
 
 struct StrainSofteningParameters {
   ElasticConstants elastic;
-  double friction_peak_rad = 0.0;       ///< φ'_p (the rate law's reference value)
-  double friction_residual_rad = 0.0;   ///< φ'_r (critical state)
+  double friction_peak_rad = 0.0;      ///< φ'_p (the rate law's reference value)
+  double friction_residual_rad = 0.0;  ///< φ'_r (critical state)
   double cohesion_peak_Pa = 0.0;
   double cohesion_residual_Pa = 0.0;
   double dilatancy_peak_rad = 0.0;      ///< ψ_p, used when relative_density is empty

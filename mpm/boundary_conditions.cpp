@@ -6,9 +6,12 @@ namespace {
 
 std::uint8_t bits_of(Fixity f, std::uint8_t normal) {
   switch (f) {
-    case Fixity::free: return 0;
-    case Fixity::roller: return normal;
-    case Fixity::fixed: return constrain_r | constrain_z;
+    case Fixity::free:
+      return 0;
+    case Fixity::roller:
+      return normal;
+    case Fixity::fixed:
+      return constrain_r | constrain_z;
   }
   return 0;
 }

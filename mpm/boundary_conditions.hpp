@@ -1,21 +1,24 @@
 #pragma once
 /// Fixities on the four sides of the grid. The inner side is the axis when the
 /// grid starts at r = 0: v_r = 0 there always (roller at least).
-#include <cstdint>
-#include <vector>
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace ffp::mpm {
 
 enum class Fixity : std::uint8_t { free, roller, fixed };
 using FixityName = std::pair<Fixity, std::string_view>;
 /// The scene's names of Fixity, in the order messages list them.
-inline constexpr auto kFixityNames = std::to_array<FixityName>({{Fixity::free, "free"}, {Fixity::roller, "roller"}, {Fixity::fixed, "fixed"}});
-inline std::string to_string(Fixity f) { return std::string(std::ranges::find(kFixityNames, f, &FixityName::first)->second); }
+inline constexpr auto kFixityNames =
+    std::to_array<FixityName>({{Fixity::free, "free"}, {Fixity::roller, "roller"}, {Fixity::fixed, "fixed"}});
+inline std::string to_string(Fixity f) {
+  return std::string(std::ranges::find(kFixityNames, f, &FixityName::first)->second);
+}
 
 struct BoundaryConditions {
   Fixity inner = Fixity::roller;  ///< r = r_0 (the axis if r_0 = 0)

@@ -11,8 +11,8 @@ struct Vector2 {
 };
 
 struct ContactLaw {
-  double friction = 0.0;          ///< μ = tan δ
-  bool rough = false;             ///< no slip at all (the limit μ → ∞)
+  double friction = 0.0;  ///< μ = tan δ
+  bool rough = false;     ///< no slip at all (the limit μ → ∞)
   /// Cap on a correction's strain per step (Bardenhagen et al. 2001, as the paper's
   /// code applies it: Anura3D's MaxStrainRate, 0.75 in the paper): a correction
   /// |v' − v| with |v' − v|·Δt/h > cap is scaled down to cap·h/Δt. It removes only

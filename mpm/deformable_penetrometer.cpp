@@ -16,10 +16,11 @@ DeformablePenetrometer::DeformablePenetrometer(const Simulation& s, const Deform
 }
 
 void DeformablePenetrometer::attach(Simulation& s) {
-  s.stages.insert_before("update_particles", {"apply_two_body_contact", [this](Simulation& sim) { apply_contact(sim); }});
+  s.stages.insert_before("update_particles",
+                         {"apply_two_body_contact", [this](Simulation& sim) { apply_contact(sim); }});
   if (s.settings.transfer == Transfer::musl)  // the classic MUSL strains from a remapped field: correct it too
-    s.stages.insert_before("compute_strain_increments",
-                           {"apply_two_body_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
+    s.stages.insert_before("compute_strain_increments", {"apply_two_body_contact_remapped",
+                                                         [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last, {"follow_deformable_penetrometer", [this](Simulation& sim) { follow(sim); }});
 }

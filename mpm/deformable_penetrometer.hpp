@@ -23,8 +23,8 @@ namespace ffp::mpm {
 
 struct DeformablePenetrometerSettings {
   PenetrometerShape shape;
-  double tip_z_m = 0.0;       ///< initial tip height
-  std::size_t body = 1;       ///< the penetrometer's body in the simulation
+  double tip_z_m = 0.0;  ///< initial tip height
+  std::size_t body = 1;  ///< the penetrometer's body in the simulation
   std::uint8_t soil_field = 0, penetrometer_field = 1;
   ContactLaw contact;
   /// Shared nodes with signed distance ≤ this take part (0: inside or on the

@@ -10,11 +10,11 @@ namespace ffp::mpm {
 
 struct Diagnostics {
   double mass_kg = 0.0;
-  double momentum_z_N_s = 0.0;        ///< Σ m v_z (the radial sum cancels over a ring)
-  double kinetic_energy_J = 0.0;      ///< Σ ½ m |v|²
-  double strain_energy_J = 0.0;       ///< Σ V w(σ), w = s:s/(4G) + (tr σ)²/(18K): recoverable elastic energy
-  double gravity_energy_J = 0.0;      ///< Σ m g z (zero without gravity)
-  double mass_z_kg_m = 0.0;           ///< Σ m z (centre of mass = mass_z / mass)
+  double momentum_z_N_s = 0.0;    ///< Σ m v_z (the radial sum cancels over a ring)
+  double kinetic_energy_J = 0.0;  ///< Σ ½ m |v|²
+  double strain_energy_J = 0.0;   ///< Σ V w(σ), w = s:s/(4G) + (tr σ)²/(18K): recoverable elastic energy
+  double gravity_energy_J = 0.0;  ///< Σ m g z (zero without gravity)
+  double mass_z_kg_m = 0.0;       ///< Σ m z (centre of mass = mass_z / mass)
   double total_energy_J() const { return kinetic_energy_J + strain_energy_J + gravity_energy_J; }
   double max_speed_m_s = 0.0;
 };

@@ -94,7 +94,8 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   g.band_first = static_cast<int>(g.z_nodes_m.size()) - 1;
   const double top = d.shape.total_length_m();
   // Fine cells above the tip, leaving at least one cell's height below the body's top (no sliver cell).
-  const int n_above = std::clamp(static_cast<int>(std::lround(m.fine_above_m / h)), 1, std::max(1, cells_in(top, h) - 1));
+  const int n_above =
+      std::clamp(static_cast<int>(std::lround(m.fine_above_m / h)), 1, std::max(1, cells_in(top, h) - 1));
   append_uniform(g.z_nodes_m, n_above * h + offset, n_above + n_below);
   append_graded(g.z_nodes_m, top, h * m.growth, m.max_cell_m, m.growth, h);
   const double last_cell = g.z_nodes_m.back() - g.z_nodes_m[g.z_nodes_m.size() - 2];
@@ -118,31 +119,25 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   const FfpSoil& s = d.soil;
   if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
     throw std::invalid_argument("particles per cell must be ≥ 1");
-  m.bodies.push_back(BodyDescription{"soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0},
-                                     s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
-                                     d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0})
-                                                          : std::nullopt,
-                                     s.disconnected_density_ratio * s.density_kg_m3});
+  m.bodies.push_back(BodyDescription{
+      "soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0}, s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
+      d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0}) : std::nullopt,
+      s.disconnected_density_ratio * s.density_kg_m3});
   const double h = d.mesh.min_cell_m;
   if (s.near_spacing_m && !(*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h))
     throw std::invalid_argument("the near zone's particle spacing must be in (0, min_cell_m]");
   const double spacing_r = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_r;
   const double spacing_z = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_z;
-  m.seeding_zones.push_back(SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, spacing_r, spacing_z});
+  m.seeding_zones.push_back(
+      SeedingZone{0, BoxRegion{0.0, s.near_radius_m, -s.near_depth_m, 0.0}, spacing_r, spacing_z});
   if (d.deformable) {
     const DeformableFfp& f = *d.deformable;
     // The density is fixed below so that the particles carry exactly the given mass.
     const double density = d.mass_kg / d.shape.volume_m3();
-    m.bodies.push_back(BodyDescription{"penetrometer",
-                                       LinearElastic(ElasticConstants{f.youngs_modulus_Pa, f.poisson_ratio}),
-                                       density,
-                                       ShapeRegion{[geometry](double r, double z) { return geometry.contains(r, z, 0.0); }},
-                                       f.ppc_r,
-                                       f.ppc_z,
-                                       0.0,
-                                       d.velocity_m_s,
-                                       std::nullopt,
-                                       0.0});
+    m.bodies.push_back(
+        BodyDescription{"penetrometer", LinearElastic(ElasticConstants{f.youngs_modulus_Pa, f.poisson_ratio}), density,
+                        ShapeRegion{[geometry](double r, double z) { return geometry.contains(r, z, 0.0); }}, f.ppc_r,
+                        f.ppc_z, 0.0, d.velocity_m_s, std::nullopt, 0.0});
   }
   return m;
 }
@@ -204,7 +199,8 @@ FfpRun::FfpRun(const FfpDescription& d)
     if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   }
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
-  s.stages.insert_before(last, {"move_mesh", [this](Simulation& sim) { mesh_.apply(sim.grid, state().displacement_m); }});
+  s.stages.insert_before(last,
+                         {"move_mesh", [this](Simulation& sim) { mesh_.apply(sim.grid, state().displacement_m); }});
 
   const MaterialGroup& soil = s.groups[0];
   const double c_p = std::sqrt(soil.constrained_modulus() / soil.density_kg_m3);

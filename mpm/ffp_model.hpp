@@ -8,15 +8,15 @@
 /// Coordinates: z up, the sand surface at z = 0, the tip initially at z = 0.
 /// Every mesh size derives from min_cell_m unless given, so a convergence
 /// study needs to change min_cell_m only.
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
-#include <vector>
-#include <algorithm>
-#include <array>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "mpm/contact_law.hpp"
 #include "mpm/deformable_penetrometer.hpp"
@@ -52,14 +52,14 @@ struct FfpSoil {
 };
 
 struct FfpMesh {
-  double min_cell_m = 0.01;     ///< the fine cells around and below the tip
-  double max_cell_m = 0.03;     ///< far field (radial), above the fine band, the air
-  double fine_radius_m = 0.15;  ///< uniform radial cells up to here, then growth ×growth per cell
-  double band_below_m = 0.05;   ///< fine moving cells below the tip
-  double fine_above_m = 0.3;    ///< fine moving cells above the tip (where the soil beside the body ends up)
-  double below_cell_m = 0.02;   ///< initial cells of the compressing zone (they shrink as the FFP goes down)
-  double air_above_m = 0.1;     ///< stretching zone above the penetrometer's top
-  double growth = 1.2;          ///< largest ratio of neighbouring cells in graded zones
+  double min_cell_m = 0.01;       ///< the fine cells around and below the tip
+  double max_cell_m = 0.03;       ///< far field (radial), above the fine band, the air
+  double fine_radius_m = 0.15;    ///< uniform radial cells up to here, then growth ×growth per cell
+  double band_below_m = 0.05;     ///< fine moving cells below the tip
+  double fine_above_m = 0.3;      ///< fine moving cells above the tip (where the soil beside the body ends up)
+  double below_cell_m = 0.02;     ///< initial cells of the compressing zone (they shrink as the FFP goes down)
+  double air_above_m = 0.1;       ///< stretching zone above the penetrometer's top
+  double growth = 1.2;            ///< largest ratio of neighbouring cells in graded zones
   double tip_offset_cells = 0.0;  ///< the band's node rows this many cells above the tip's (0: the tip on a row)
 };
 
@@ -75,15 +75,18 @@ enum class PicBlend : std::uint8_t {
 };
 using PicBlendName = std::pair<PicBlend, std::string_view>;
 /// The scene's names of PicBlend, in the order messages list them.
-inline constexpr auto kPicBlendNames = std::to_array<PicBlendName>({{PicBlend::per_soil_step, "per_soil_step"}, {PicBlend::per_step, "per_step"}});
-inline std::string to_string(PicBlend b) { return std::string(std::ranges::find(kPicBlendNames, b, &PicBlendName::first)->second); }
+inline constexpr auto kPicBlendNames =
+    std::to_array<PicBlendName>({{PicBlend::per_soil_step, "per_soil_step"}, {PicBlend::per_step, "per_step"}});
+inline std::string to_string(PicBlend b) {
+  return std::string(std::ranges::find(kPicBlendNames, b, &PicBlendName::first)->second);
+}
 
 struct FfpDescription {
   FfpSoil soil;
   PenetrometerShape shape;
   double mass_kg = 7.71;
-  double velocity_m_s = -5.6;  ///< + up: impact velocity (free) or push velocity (prescribed)
-  bool prescribed = false;     ///< CPT-like constant velocity
+  double velocity_m_s = -5.6;               ///< + up: impact velocity (free) or push velocity (prescribed)
+  bool prescribed = false;                  ///< CPT-like constant velocity
   std::optional<DeformableFfp> deformable;  ///< absent: rigid body (section 4.1)
   RigidBodyForce force = RigidBodyForce::contact_impulse;
   double external_force_N = 0.0;  ///< on a free rigid body, + up

@@ -65,8 +65,8 @@ void for_each_seed(const GridAxis& R, const GridAxis& Z, const BodyDescription& 
 
 }  // namespace
 
-void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
-                           double gravity_m_s2, Particles& particles, std::span<const SeedingZone> zones) {
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index, double gravity_m_s2,
+                           Particles& particles, std::span<const SeedingZone> zones) {
   check_body(body, body_index, zones);
   const double unit_weight = body.density_kg_m3 * gravity_m_s2;
   for_each_seed(grid.r, grid.z, body, body_index, zones, [&](double r, double z, double hr, double hz) {
@@ -90,7 +90,8 @@ std::size_t count_body_particles(const GridAxis& r_axis, const GridAxis& z_axis,
                                  std::uint8_t body_index, std::span<const SeedingZone> zones, std::size_t limit) {
   check_body(body, body_index, zones);
   std::size_t count = 0;
-  for_each_seed(r_axis, z_axis, body, body_index, zones, [&](double, double, double, double) { return ++count < limit; });
+  for_each_seed(r_axis, z_axis, body, body_index, zones,
+                [&](double, double, double, double) { return ++count < limit; });
   return count;
 }
 

@@ -17,8 +17,8 @@ namespace ffp::mpm {
 /// ParticleBins strip sit together in memory. Sets the K0 stress when asked
 /// (unit weight ρ·g). Cells whose centre lies in one of the body's seeding
 /// zones are seeded at the zone's spacing instead.
-void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
-                           double gravity_m_s2, Particles& particles, std::span<const SeedingZone> zones = {});
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index, double gravity_m_s2,
+                           Particles& particles, std::span<const SeedingZone> zones = {});
 
 /// How many particles append_body_particles would make on a grid with these
 /// axes, without making them; counting stops at `limit` (then the result is

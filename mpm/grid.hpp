@@ -14,8 +14,8 @@ namespace ffp::mpm {
 struct Grid {
   GridAxis r;
   GridAxis z;
-  std::vector<NodalField> fields;            ///< [0] is the system field (the only one without contact)
-  std::vector<NodeConstraint> constraints;   ///< from the boundary conditions
+  std::vector<NodalField> fields;           ///< [0] is the system field (the only one without contact)
+  std::vector<NodeConstraint> constraints;  ///< from the boundary conditions
 
   std::size_t nodes() const { return static_cast<std::size_t>(r.nodes()) * static_cast<std::size_t>(z.nodes()); }
   std::size_t cells() const { return static_cast<std::size_t>(r.cells()) * static_cast<std::size_t>(z.cells()); }

@@ -46,7 +46,7 @@ class GridAxis {
 
   std::vector<double> x_;
   std::vector<double> inverse_spacing_;  ///< 1/h per cell
-  std::vector<int> lookup_;  ///< bucket → first candidate cell
+  std::vector<int> lookup_;              ///< bucket → first candidate cell
   double inverse_bucket_ = 0.0;
   double min_spacing_ = 0.0;
 };

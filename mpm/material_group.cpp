@@ -3,7 +3,10 @@
 namespace ffp::mpm {
 
 MaterialGroup::MaterialGroup(std::string group_name, MaterialLaw material_law, double density)
-    : name(std::move(group_name)), law(std::move(material_law)), density_kg_m3(density), states(initial_states(law, 0)) {}
+    : name(std::move(group_name)),
+      law(std::move(material_law)),
+      density_kg_m3(density),
+      states(initial_states(law, 0)) {}
 
 void MaterialGroup::update(std::size_t first, std::size_t last, std::span<Voigt> stress,
                            std::span<const Voigt> strain_increment, double dt_s) {

@@ -31,9 +31,9 @@ struct MaterialGroup {
   /// makes √(M/ρ) seven times the sand's and the step seven times shorter.
   /// 0: never (continua that may not lose contact).
   double disconnected_below_kg_m3 = 0.0;
-  std::size_t begin = 0;       ///< first particle
-  std::size_t end = 0;         ///< one past the last particle
-  MaterialStates states;       ///< one per particle, [0, size()) for particles [begin, end)
+  std::size_t begin = 0;  ///< first particle
+  std::size_t end = 0;    ///< one past the last particle
+  MaterialStates states;  ///< one per particle, [0, size()) for particles [begin, end)
 
   MaterialGroup(std::string name, MaterialLaw law, double density_kg_m3);
 

@@ -2,17 +2,17 @@
 /// What a simulation is built from: grid coordinates, bodies, boundaries,
 /// loads and solver settings. The `mpm` scene kind fills this from JSON; tests
 /// fill it in code.
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
-#include <variant>
-#include <vector>
-#include <algorithm>
-#include <array>
 #include <string_view>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include "mpm/boundary_conditions.hpp"
 #include "mpm/material_group.hpp"
@@ -21,22 +21,25 @@
 namespace ffp::mpm {
 
 enum class Transfer : std::uint8_t {
-  usl,   ///< update stress last: positions and strain rate from v_i^{n+1} of the grid update
-  musl,  ///< modified USL (Sulsky et al. 1995): positions from v_i^{n+1}, strain rate from the velocities
-         ///< remapped from the updated particles (with contact, the remapped field is corrected again)
+  usl,            ///< update stress last: positions and strain rate from v_i^{n+1} of the grid update
+  musl,           ///< modified USL (Sulsky et al. 1995): positions from v_i^{n+1}, strain rate from the velocities
+                  ///< remapped from the updated particles (with contact, the remapped field is corrected again)
   musl_remapped,  ///< the paper's code (Anura3D): positions and strain rate both from the remapped
                   ///< velocities, no second contact correction: a particle moves as it strains
 };
 using TransferName = std::pair<Transfer, std::string_view>;
 /// The scene's names of Transfer, in the order messages list them.
-inline constexpr auto kTransferNames = std::to_array<TransferName>({{Transfer::usl, "usl"}, {Transfer::musl, "musl"}, {Transfer::musl_remapped, "musl_remapped"}});
-inline std::string to_string(Transfer t) { return std::string(std::ranges::find(kTransferNames, t, &TransferName::first)->second); }
+inline constexpr auto kTransferNames = std::to_array<TransferName>(
+    {{Transfer::usl, "usl"}, {Transfer::musl, "musl"}, {Transfer::musl_remapped, "musl_remapped"}});
+inline std::string to_string(Transfer t) {
+  return std::string(std::ranges::find(kTransferNames, t, &TransferName::first)->second);
+}
 
 struct SolverSettings {
   ShapeFunction shape_function = ShapeFunction::gimp;
   Transfer transfer = Transfer::musl;
-  double flip_fraction = 0.99;  ///< α in v_p ← α·FLIP + (1 − α)·PIC
-  double courant = 0.5;         ///< Δt = C·h_min/(c_p + |v|_max)
+  double flip_fraction = 0.99;       ///< α in v_p ← α·FLIP + (1 − α)·PIC
+  double courant = 0.5;              ///< Δt = C·h_min/(c_p + |v|_max)
   std::optional<double> fixed_dt_s;  ///< when set, Δt is fixed (checked against the CFL limit every step)
   bool strain_smoothing = true;      ///< cell-averaged volumetric strain increment (anti-locking)
   double local_damping = 0.0;        ///< Cundall's local damping coefficient (0: no damping stage)

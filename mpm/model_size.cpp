@@ -19,8 +19,8 @@ ModelSize estimate_model_size(const ModelDescription& model, double budget_bytes
   const GridAxis r_axis(model.r_nodes_m), z_axis(model.z_nodes_m);
   auto limit = static_cast<std::size_t>(std::min(room / ModelSize::kBytesPerParticle + 1.0, 1e15));
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const std::size_t n = count_body_particles(r_axis, z_axis, model.bodies[b], static_cast<std::uint8_t>(b),
-                                               model.seeding_zones, limit);
+    const std::size_t n =
+        count_body_particles(r_axis, z_axis, model.bodies[b], static_cast<std::uint8_t>(b), model.seeding_zones, limit);
     size.particles += n;
     if (n >= limit) {
       size.particles_at_least = true;

@@ -11,8 +11,8 @@ void NodalField::resize(std::size_t nodes) {
 }
 
 void NodalField::reset() {
-  for (auto* a : {&mass, &momentum_r, &momentum_z, &internal_force_r, &internal_force_z, &external_force_r,
-                  &external_force_z})
+  for (auto* a :
+       {&mass, &momentum_r, &momentum_z, &internal_force_r, &internal_force_z, &external_force_r, &external_force_z})
     std::fill(a->begin(), a->end(), 0.0);
 }
 

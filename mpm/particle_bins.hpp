@@ -18,8 +18,8 @@
 namespace ffp::mpm {
 
 struct ParticleBins {
-  static constexpr int width = 4;  ///< cells per strip: > 3 keeps same-colour strips apart with GIMP
-  int axis = 0;                    ///< 0: strips of cell columns (along r), 1: of cell rows (along z)
+  static constexpr int width = 4;      ///< cells per strip: > 3 keeps same-colour strips apart with GIMP
+  int axis = 0;                        ///< 0: strips of cell columns (along r), 1: of cell rows (along z)
   std::vector<std::uint32_t> offsets;  ///< strip s holds order[offsets[s] .. offsets[s+1])
   std::vector<std::uint32_t> order;    ///< particle indices, strip by strip
 

@@ -14,14 +14,14 @@ struct PenetrometerShape {
   bool flat_tip() const;         ///< apex angle π: a flat circular base (a punch)
   double cone_height_m() const;  ///< R / tan(apex/2), 7.58 cm for the BlueDrop; 0 for a flat tip
   double total_length_m() const { return cone_height_m() + body_length_m; }
-  double volume_m3() const;      ///< of the solid of revolution (fillet included)
+  double volume_m3() const;  ///< of the solid of revolution (fillet included)
 };
 
 /// Closest point of the outline to a query point, in local coordinates (tip at
 /// the origin, z up along the axis).
 struct SurfaceQuery {
-  double signed_distance_m;  ///< < 0 inside the penetrometer
-  double normal_r, normal_z; ///< unit outward normal of the surface at the closest point
+  double signed_distance_m;   ///< < 0 inside the penetrometer
+  double normal_r, normal_z;  ///< unit outward normal of the surface at the closest point
 };
 
 class PenetrometerGeometry {
@@ -38,7 +38,7 @@ class PenetrometerGeometry {
  private:
   PenetrometerShape shape_;
   double sin_half_ = 0, cos_half_ = 0;
-  double cone_end_r_ = 0, cone_end_z_ = 0;       // cone–fillet tangent point
+  double cone_end_r_ = 0, cone_end_z_ = 0;  // cone–fillet tangent point
   double fillet_center_r_ = 0, fillet_center_z_ = 0;
   double top_z_ = 0;
 };

@@ -36,7 +36,8 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
   nodes_.clear();
   soil_star_.clear();
   const NodalField& f = s.grid.fields[settings_.soil_field];
-  const double reach = settings_.detection_distance_m + 1e-9 * s.grid.min_spacing();  // nodes exactly on the outline count
+  const double reach =
+      settings_.detection_distance_m + 1e-9 * s.grid.min_spacing();  // nodes exactly on the outline count
   const double r_max = settings_.shape.base_radius_m + reach;
   const double z_lo = tip_z_ - reach, z_hi = tip_z_ + settings_.shape.total_length_m() + reach;
   for (int i = 0; i < s.grid.r.nodes(); ++i) {
@@ -99,7 +100,8 @@ double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) cons
     }
   }
   if ((f_lo > 0.0) == (f_hi > 0.0))
-    throw StepFailure("rigid penetrometer: no bracket for the contact velocity at t = " + std::to_string(s.time_s) + " s");
+    throw StepFailure("rigid penetrometer: no bracket for the contact velocity at t = " + std::to_string(s.time_s) +
+                      " s");
   // Exact on each linear piece of the residual, and never leaves the bracket.
   const auto width = [](double v) { return 1e-15 * (1.0 + std::abs(v)); };
   return illinois_root(residual, hi, f_hi, lo, f_lo, 0.0, width, 200).x;

@@ -34,13 +34,13 @@
 /// projection is purely positional: the particle keeps its velocity, which the
 /// grid contact has already corrected (and will again at the next step), so the
 /// soil's momentum, the body's impulse and their exact balance are unchanged.
-#include <cstdint>
-#include <vector>
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "mpm/contact_law.hpp"
 #include "mpm/penetrometer_geometry.hpp"
@@ -57,17 +57,21 @@ enum class RigidMotion : std::uint8_t {
 enum class RigidBodyForce : std::uint8_t { contact_impulse, soil_internal_force };
 using RigidBodyForceName = std::pair<RigidBodyForce, std::string_view>;
 /// The scene's names of RigidBodyForce, in the order messages list them.
-inline constexpr auto kRigidBodyForceNames = std::to_array<RigidBodyForceName>({{RigidBodyForce::contact_impulse, "contact_impulse"}, {RigidBodyForce::soil_internal_force, "soil_internal_force"}});
-inline std::string to_string(RigidBodyForce f) { return std::string(std::ranges::find(kRigidBodyForceNames, f, &RigidBodyForceName::first)->second); }
+inline constexpr auto kRigidBodyForceNames =
+    std::to_array<RigidBodyForceName>({{RigidBodyForce::contact_impulse, "contact_impulse"},
+                                       {RigidBodyForce::soil_internal_force, "soil_internal_force"}});
+inline std::string to_string(RigidBodyForce f) {
+  return std::string(std::ranges::find(kRigidBodyForceNames, f, &RigidBodyForceName::first)->second);
+}
 
 struct RigidPenetrometerSettings {
   PenetrometerShape shape;
-  double mass_kg = 0.0;             ///< whole body (unused for a prescribed motion)
-  double tip_z_m = 0.0;             ///< initial tip height
-  double velocity_m_s = 0.0;        ///< initial (free) or prescribed vertical velocity, + up
+  double mass_kg = 0.0;       ///< whole body (unused for a prescribed motion)
+  double tip_z_m = 0.0;       ///< initial tip height
+  double velocity_m_s = 0.0;  ///< initial (free) or prescribed vertical velocity, + up
   RigidMotion motion = RigidMotion::free;
   RigidBodyForce force = RigidBodyForce::contact_impulse;
-  double external_force_N = 0.0;    ///< t_rb of eq. 1, vertical, + up
+  double external_force_N = 0.0;  ///< t_rb of eq. 1, vertical, + up
   ContactLaw contact;
   /// Nodes with signed distance ≤ this are penetrometer nodes (0: inside or on the outline).
   double detection_distance_m = 0.0;

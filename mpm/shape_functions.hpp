@@ -3,8 +3,8 @@
 /// grid, built from 1D factors: S_ip = s_r(r_p)·s_z(z_p),
 /// G_ip = (s_r'·s_z, s_r·s_z'). Any (non-uniform, moving) node spacing.
 #include <algorithm>
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,8 +16,11 @@ namespace ffp::mpm {
 enum class ShapeFunction : std::uint8_t { linear, gimp };
 using ShapeFunctionName = std::pair<ShapeFunction, std::string_view>;
 /// The scene's names of ShapeFunction, in the order messages list them.
-inline constexpr auto kShapeFunctionNames = std::to_array<ShapeFunctionName>({{ShapeFunction::linear, "linear"}, {ShapeFunction::gimp, "gimp"}});
-inline std::string to_string(ShapeFunction f) { return std::string(std::ranges::find(kShapeFunctionNames, f, &ShapeFunctionName::first)->second); }
+inline constexpr auto kShapeFunctionNames =
+    std::to_array<ShapeFunctionName>({{ShapeFunction::linear, "linear"}, {ShapeFunction::gimp, "gimp"}});
+inline std::string to_string(ShapeFunction f) {
+  return std::string(std::ranges::find(kShapeFunctionNames, f, &ShapeFunctionName::first)->second);
+}
 
 /// Nodes of one particle's support in one direction: base, base+1 (, base+2).
 struct Weights1D {
@@ -95,7 +98,7 @@ struct ShapeWeights {
   std::int32_t node_r = 0, node_z = 0;  ///< first node of the support patch
   std::uint32_t cell = 0;               ///< grid cell holding the particle
   double wr[3], gr[3], wz[3], gz[3];
-  double inverse_r;                     ///< 1/r_p, for the hoop terms
+  double inverse_r;  ///< 1/r_p, for the hoop terms
 };
 
 }  // namespace ffp::mpm

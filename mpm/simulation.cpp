@@ -91,8 +91,8 @@ double cfl_time_step_limit(const Simulation& s) {
       const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
       const Voigt& sig = p.stress[i];
       // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
-      const double bound = std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]),
-                                     std::abs(sig[2])});
+      const double bound =
+          std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
       if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
         ++bad;
       stiffest = std::max(stiffest, inverse_density);
@@ -109,8 +109,10 @@ double cfl_time_step_limit(const Simulation& s) {
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!(p.volume[i] > 0.0) || !std::isfinite(p.volume[i]) || !std::isfinite(p.vr[i]) || !std::isfinite(p.vz[i]) ||
           !p.stress[i].allFinite())
-        throw StepFailure("particle " + std::to_string(i) + " has a non-finite velocity or stress, or a non-positive "
-                          "volume at t = " + std::to_string(s.time_s) + " s (unstable step?)");
+        throw StepFailure("particle " + std::to_string(i) +
+                          " has a non-finite velocity or stress, or a non-positive "
+                          "volume at t = " +
+                          std::to_string(s.time_s) + " s (unstable step?)");
     }
   }
   return s.grid.min_spacing() / fastest;

@@ -34,8 +34,8 @@ struct Walls {
 
 struct Body {
   std::string name;
-  std::size_t group = 0;     ///< its material group
-  std::uint8_t field = 0;    ///< the nodal field its particles map to (0 without contact)
+  std::size_t group = 0;           ///< its material group
+  std::uint8_t field = 0;          ///< the nodal field its particles map to (0 without contact)
   std::size_t begin = 0, end = 0;  ///< particle range
 };
 
@@ -48,9 +48,9 @@ class Simulation {
 
   // --- configuration (fixed after construction) -----------------------------
   SolverSettings settings;
-  std::optional<double> gravity_m_s2;      ///< magnitude along −z
+  std::optional<double> gravity_m_s2;  ///< magnitude along −z
   std::vector<SurfacePressure> pressures;
-  double mass_floor_kg = 0.0;              ///< nodes lighter than this are empty
+  double mass_floor_kg = 0.0;  ///< nodes lighter than this are empty
 
   // --- state ----------------------------------------------------------------
   Grid grid;
@@ -68,8 +68,8 @@ class Simulation {
   /// it touches moves with it, and a body that crosses more than a cell per step
   /// jumps over its contact nodes (measured: a 200 m/s impact failed at step 0).
   double rigid_speed_m_s = 0.0;
-  Walls walls{};            ///< from the boundary conditions
-  long wall_clamps = 0;     ///< particle moves stopped at a wall or the axis (should stay 0)
+  Walls walls{};         ///< from the boundary conditions
+  long wall_clamps = 0;  ///< particle moves stopped at a wall or the axis (should stay 0)
 
   // --- per-step scratch, valid from compute_shape_functions to the step's end
   std::vector<ShapeWeights> weights;

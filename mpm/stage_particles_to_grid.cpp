@@ -13,7 +13,8 @@ template <int S, class Fn>
 inline void for_support(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
   for (int b = 0; b < S; ++b) {
     const std::size_t row = grid.node(w.node_r, w.node_z + b);
-    for (int a = 0; a < S; ++a) fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
+    for (int a = 0; a < S; ++a)
+      fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
   }
 }
 
@@ -41,7 +42,8 @@ void scatter_internal_forces(Simulation& s) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
     Voigt sig = P.stress[p];
-    if (smoothed && takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
+    if (smoothed &&
+        takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
       const double shift = s.cell_mean_stress[w.cell * bodies + P.body[p]] - trace(sig) / 3.0;
       sig[0] += shift;
       sig[1] += shift;

@@ -9,9 +9,8 @@ void update_time_step(Simulation& s) {
   s.dt_limit_s = cfl_time_step_limit(s);
   if (s.settings.fixed_dt_s) {
     if (*s.settings.fixed_dt_s > s.dt_limit_s)
-      throw StepFailure("the fixed time step " + std::to_string(*s.settings.fixed_dt_s) +
-                        " s exceeds the CFL limit " + std::to_string(s.dt_limit_s) + " s at t = " +
-                        std::to_string(s.time_s) + " s");
+      throw StepFailure("the fixed time step " + std::to_string(*s.settings.fixed_dt_s) + " s exceeds the CFL limit " +
+                        std::to_string(s.dt_limit_s) + " s at t = " + std::to_string(s.time_s) + " s");
     s.dt_next_s = *s.settings.fixed_dt_s;
   } else {
     s.dt_next_s = s.settings.courant * s.dt_limit_s;

@@ -20,24 +20,24 @@ inline bool takes_part_in_cell_means(const Particles& P, std::size_t p, const st
   return P.mass[p] > limit[P.body[p]] * P.volume[p];
 }
 
-void reset_grid(Simulation& s);               ///< zero mass, momentum and forces of every field
-void compute_shape_functions(Simulation& s);  ///< S_ip, G_ip at start-of-step positions; strip bins
-void map_particles_to_grid(Simulation& s);    ///< m_i, p_i
-void smooth_mean_stress(Simulation& s);       ///< cell-averaged mean stress for the internal force
-void compute_internal_forces(Simulation& s);  ///< f_i^int incl. the hoop term
-void apply_gravity(Simulation& s);            ///< f_i^ext += m_i g
-void apply_surface_pressure(Simulation& s);   ///< nodal forces of pressures on r grid lines
-void apply_local_damping(Simulation& s);      ///< Cundall: f_i −= α |f_i| sign(v_i)
-void integrate_grid(Simulation& s);           ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
+void reset_grid(Simulation& s);                 ///< zero mass, momentum and forces of every field
+void compute_shape_functions(Simulation& s);    ///< S_ip, G_ip at start-of-step positions; strip bins
+void map_particles_to_grid(Simulation& s);      ///< m_i, p_i
+void smooth_mean_stress(Simulation& s);         ///< cell-averaged mean stress for the internal force
+void compute_internal_forces(Simulation& s);    ///< f_i^int incl. the hoop term
+void apply_gravity(Simulation& s);              ///< f_i^ext += m_i g
+void apply_surface_pressure(Simulation& s);     ///< nodal forces of pressures on r grid lines
+void apply_local_damping(Simulation& s);        ///< Cundall: f_i −= α |f_i| sign(v_i)
+void integrate_grid(Simulation& s);             ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
 void apply_boundary_conditions(Simulation& s);  ///< zero constrained velocity components
-void update_particles(Simulation& s);         ///< FLIP/PIC velocity; position (but musl_remapped)
-void move_particles(Simulation& s);           ///< musl_remapped: position from the remapped velocities
-void map_velocities_to_grid(Simulation& s);   ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i
+void update_particles(Simulation& s);           ///< FLIP/PIC velocity; position (but musl_remapped)
+void move_particles(Simulation& s);             ///< musl_remapped: position from the remapped velocities
+void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i
 
 enum class StrainVelocity : std::uint8_t { updated_grid, remapped };
 void compute_strain_increments(Simulation& s, StrainVelocity source);  ///< Δε, spin, volume
-void smooth_volumetric_strain(Simulation& s);  ///< cell-averaged Δε_vol
-void update_stresses(Simulation& s);           ///< Jaumann rotation, then the law
-void update_time_step(Simulation& s);          ///< CFL Δt for the next step (or check a fixed Δt)
+void smooth_volumetric_strain(Simulation& s);                          ///< cell-averaged Δε_vol
+void update_stresses(Simulation& s);                                   ///< Jaumann rotation, then the law
+void update_time_step(Simulation& s);  ///< CFL Δt for the next step (or check a fixed Δt)
 
 }  // namespace ffp::mpm

@@ -68,7 +68,8 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
     for (std::size_t k = 0; k < map.contour_levels.size(); ++k)
       script << (k ? "," : "") << shown(map.contour_levels[k]);
     script << "\nset cntrlabel onecolor format '%.0f'\nunset clabel\n";
-    script << "unset surface\nset table $contours\nsplot $grid using 1:2:3 with lines notitle\nunset table\nunset contour\n";
+    script << "unset surface\nset table $contours\nsplot $grid using 1:2:3 with lines notitle\nunset table\nunset "
+              "contour\n";
     script << "plot $grid using 1:2:3 with image notitle, $contours using 1:2 with lines lc rgb 'black' lw 1 "
               "title 'decades'\n";
   } else {
@@ -80,8 +81,8 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
   {
     std::ofstream out(script_file);
     out << "set terminal pngcairo size " << map.width_px << "," << map.height_px << " font 'Sans,10'\n";
-    out << "set output " << quoted(temporary_png.string()) << "\nset encoding utf8\n" << script.str()
-        << "unset output\n";
+    out << "set output " << quoted(temporary_png.string()) << "\nset encoding utf8\n"
+        << script.str() << "unset output\n";
   }
   const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
   std::string log;

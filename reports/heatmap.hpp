@@ -12,10 +12,10 @@ struct HeatMap {
   std::string x_label;
   std::string y_label;
   std::string value_label;
-  std::vector<double> x;       ///< nx grid abscissae (increasing)
-  std::vector<double> y;       ///< ny grid ordinates (increasing)
-  std::vector<double> values;  ///< values[iy * nx + ix]
-  bool log_values = true;      ///< colour and contours by log10(value); values ≤ 0 are floored
+  std::vector<double> x;               ///< nx grid abscissae (increasing)
+  std::vector<double> y;               ///< ny grid ordinates (increasing)
+  std::vector<double> values;          ///< values[iy * nx + ix]
+  bool log_values = true;              ///< colour and contours by log10(value); values ≤ 0 are floored
   std::vector<double> contour_levels;  ///< in value units; empty: none
   int width_px = 800;
   int height_px = 700;

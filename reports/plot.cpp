@@ -93,8 +93,7 @@ void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream
     data << line;
   }
   data << "EOD\n";
-  script << "plot $data" << points_block << " using 1:2:3 with points pt 5 ps " << map.point_size
-         << " palette notitle";
+  script << "plot $data" << points_block << " using 1:2:3 with points pt 5 ps " << map.point_size << " palette notitle";
   for (const auto& s : map.overlays) {
     data << "$data" << block << " << EOD\n";
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {

@@ -5,11 +5,11 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 #include <map>
-#include <thread>
 #include <sstream>
+#include <thread>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -84,14 +84,16 @@ std::string hex_key(const std::string& material) {
 /// line on its row of commands.txt) with the threads Slurm gives it, and leaves its
 /// exit code beside its log. Returns once the array has left the queue.
 void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
-                  const std::vector<std::size_t>& pending, std::vector<RunOutcome>& outcomes, const fs::path& cache_root) {
+                  const std::vector<std::size_t>& pending, std::vector<RunOutcome>& outcomes,
+                  const fs::path& cache_root) {
   const fs::path batch = fs::absolute(cache_root / (".slurm-" + std::to_string(::getpid())));
   fs::create_directories(batch);
   std::ostringstream commands;
   for (std::size_t t = 0; t < pending.size(); ++t) {
     const RunRequest& r = requests[pending[t]];
-    commands << shell_quoted(fs::canonical(ffp_binary).string()) << " run " << shell_quoted(fs::absolute(r.scene_file).string())
-             << " --out " << shell_quoted(fs::absolute(outcomes[pending[t]].out_dir).string()) << " --quiet";
+    commands << shell_quoted(fs::canonical(ffp_binary).string()) << " run "
+             << shell_quoted(fs::absolute(r.scene_file).string()) << " --out "
+             << shell_quoted(fs::absolute(outcomes[pending[t]].out_dir).string()) << " --quiet";
     for (const auto& o : r.overrides) commands << " --set " << shell_quoted(o);
     commands << "\n";
   }
@@ -99,8 +101,7 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
   write_file_atomically(
       batch / "batch.sbatch",
       "#!/usr/bin/env bash\n#SBATCH --job-name=ffp-report\n#SBATCH --array=0-" + std::to_string(pending.size() - 1) +
-          "\n#SBATCH --output=" + (batch / "task-%a.out").string() +
-          "\nset -u\ncd " + shell_quoted(batch.string()) +
+          "\n#SBATCH --output=" + (batch / "task-%a.out").string() + "\nset -u\ncd " + shell_quoted(batch.string()) +
           "\nexport OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n"
           "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" commands.txt)\n"
           "eval \"$line\" 2> \"task-$SLURM_ARRAY_TASK_ID.err\"\n"
@@ -112,7 +113,8 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
   slurm_wait(job, [&] {
     throw_if_interrupted();
     std::size_t done = 0;
-    for (std::size_t t = 0; t < pending.size(); ++t) done += fs::exists(batch / ("task-" + std::to_string(t) + ".exit"));
+    for (std::size_t t = 0; t < pending.size(); ++t)
+      done += fs::exists(batch / ("task-" + std::to_string(t) + ".exit"));
     if (done != reported) std::fprintf(stderr, "  %zu of %zu runs done\n", done, pending.size());
     reported = done;
   });
@@ -185,17 +187,15 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + key);
     // Complete when its manifest is there (written last, then the folder renamed
     // into place); summary.json alone marks a run cached before manifests.
-    if (fs::exists(outcomes[i].out_dir / kOutputManifest) ||
-        fs::exists(outcomes[i].out_dir / "summary.json")) {
+    if (fs::exists(outcomes[i].out_dir / kOutputManifest) || fs::exists(outcomes[i].out_dir / "summary.json")) {
       outcomes[i].cached = true;
       outcomes[i].exit_code = 0;
     } else {
       pending.push_back(i);
     }
   }
-  std::stable_sort(pending.begin(), pending.end(), [&](std::size_t a, std::size_t b) {
-    return expected_wall_s[a] > expected_wall_s[b];
-  });
+  std::stable_sort(pending.begin(), pending.end(),
+                   [&](std::size_t a, std::size_t b) { return expected_wall_s[a] > expected_wall_s[b]; });
   const std::size_t cached = requests.size() - duplicates.size() - pending.size();
   std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
   if (scheduler == Scheduler::slurm && !pending.empty()) {
@@ -217,7 +217,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   std::vector<char*> child_environ;  // filled below, before the first launch
   auto launch = [&](std::size_t i) {
     const RunRequest& r = requests[i];
-    std::vector<std::string> args = {ffp_binary.string(), "run", r.scene_file.string(), "--out",
+    std::vector<std::string> args = {ffp_binary.string(),          "run",    r.scene_file.string(), "--out",
                                      outcomes[i].out_dir.string(), "--quiet"};
     for (const auto& o : r.overrides) {
       args.push_back("--set");

@@ -9,20 +9,20 @@
 namespace ffp {
 
 struct RunRequest {
-  std::string label;                    ///< shown in progress and tables
+  std::string label;  ///< shown in progress and tables
   std::filesystem::path scene_file;
-  std::vector<std::string> overrides;   ///< "key=value", as for --set
+  std::vector<std::string> overrides;  ///< "key=value", as for --set
   /// A rough cost (a wall time measured here) used only to start the longest
   /// runs first, so that no long run is left alone at the end on one core.
   double expected_wall_s = 0.0;
 };
 
 struct RunOutcome {
-  std::filesystem::path out_dir;        ///< where summary.json and history.csv are
+  std::filesystem::path out_dir;  ///< where summary.json and history.csv are
   int exit_code = -1;
   bool cached = false;
-  double wall_time_s = 0.0;             ///< of this invocation (0 when cached)
-  std::string error;                    ///< last stderr line when it failed
+  double wall_time_s = 0.0;  ///< of this invocation (0 when cached)
+  std::string error;         ///< last stderr line when it failed
 };
 
 /// The last non-empty line of a run's log (its error message when it failed); "" if none.
@@ -45,7 +45,7 @@ enum class Scheduler { local, slurm };
 /// skipping those whose summary.json already exists; the longest expected runs
 /// start first, the others in the given order. Progress lines go to stderr.
 std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
-                                const std::filesystem::path& cache_root, const std::string& program_version,
-                                int jobs, Scheduler scheduler = Scheduler::local);
+                                const std::filesystem::path& cache_root, const std::string& program_version, int jobs,
+                                Scheduler scheduler = Scheduler::local);
 
 }  // namespace ffp

@@ -17,7 +17,7 @@ CsvData StudyResults::history(std::size_t i) const {
 }
 
 StudyResults StudyResults::extended(const std::vector<RunRequest>& requests,
-                                   const std::vector<RunOutcome>& outcomes) const {
+                                    const std::vector<RunOutcome>& outcomes) const {
   StudyResults more = *this;
   more.requests_.insert(more.requests_.end(), requests.begin(), requests.end());
   more.outcomes_.insert(more.outcomes_.end(), outcomes.begin(), outcomes.end());

@@ -24,7 +24,7 @@ class StudyResults {
   const RunRequest& request(std::size_t i) const { return requests_[i]; }
   const RunOutcome& outcome(std::size_t i) const { return outcomes_[i]; }
   nlohmann::json summary(std::size_t i) const;  ///< {} when the run failed
-  CsvData history(std::size_t i) const;          ///< empty when the run failed
+  CsvData history(std::size_t i) const;         ///< empty when the run failed
   std::filesystem::path file(std::size_t i, const std::string& relative) const {
     return outcomes_[i].out_dir / relative;
   }
@@ -40,9 +40,9 @@ class StudyResults {
 
 struct StudyOutput {
   Markdown& document;
-  std::filesystem::path figures_dir;   ///< write PNGs here
-  std::string figures_relative;        ///< how report.md refers to figures_dir
-  std::filesystem::path tables_dir;    ///< write CSV tables here
+  std::filesystem::path figures_dir;  ///< write PNGs here
+  std::string figures_relative;       ///< how report.md refers to figures_dir
+  std::filesystem::path tables_dir;   ///< write CSV tables here
 };
 
 struct Study {

@@ -57,7 +57,8 @@ int command_bench(const BenchOptions& options) {
 
     std::printf("%s, %u hardware threads, median of %d runs (wall time inside the run, without process start)\n\n",
                 version_string().c_str(), std::thread::hardware_concurrency(), repeats);
-    std::printf("| scene | wall time [s] | steps | steps/s | particles | particle-steps/s |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| scene | wall time [s] | steps | steps/s | particles | particle-steps/s |\n|---|---|---|---|---|---|\n");
     int failures = 0;
     for (std::size_t i = 0; i < requests.size(); ++i) {
       if (summaries[i].empty()) {
@@ -72,7 +73,8 @@ int command_bench(const BenchOptions& options) {
       const double particles = summaries[i].front().value("particles", 0.0);
       char particle_columns[96] = "– | –";
       if (particles > 0)
-        std::snprintf(particle_columns, sizeof particle_columns, "%.0f | %.2f M", particles, particles * steps / t / 1e6);
+        std::snprintf(particle_columns, sizeof particle_columns, "%.0f | %.2f M", particles,
+                      particles * steps / t / 1e6);
       std::printf("| %s | %.3f | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, steps, steps / t,
                   particle_columns);
     }

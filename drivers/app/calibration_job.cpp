@@ -31,8 +31,8 @@ class CalibrationJob : public Job {
 
   void describe(std::ostream& out) const override {
     out << "calibration: η of the ssmc by " << to_string(spec_.settings.mode) << " on " << spec_.lab_file.string()
-        << " (" << spec_.lab.axial_strain.size() << " points, ε_a to " << spec_.lab.axial_strain.back()
-        << "), η in [" << spec_.settings.eta_min << ", " << spec_.settings.eta_max << "], ";
+        << " (" << spec_.lab.axial_strain.size() << " points, ε_a to " << spec_.lab.axial_strain.back() << "), η in ["
+        << spec_.settings.eta_min << ", " << spec_.settings.eta_max << "], ";
     if (spec_.specimen == SpecimenType::element) {
       out << "element test with " << spec_.test.increments << " increments\n";
     } else {
@@ -44,14 +44,14 @@ class CalibrationJob : public Job {
   }
 
   void run(RunContext& context) override {
-    const NumericalTriaxial triaxial = spec_.specimen == SpecimenType::element
-                                           ? element_test_triaxial(spec_.material, spec_.test)
-                                           : mpm_triaxial_specimen(spec_.material, spec_.mpm,
-                                                                   [this](double eta, const MpmTriaxialResult& r) {
-                                                                     record(eta, r);
-                                                                     // Ctrl-C waits for one run at most (≤ ~15 s at 0.5 cm).
-                                                                     throw_if_interrupted();
-                                                                   });
+    const NumericalTriaxial triaxial =
+        spec_.specimen == SpecimenType::element
+            ? element_test_triaxial(spec_.material, spec_.test)
+            : mpm_triaxial_specimen(spec_.material, spec_.mpm, [this](double eta, const MpmTriaxialResult& r) {
+                record(eta, r);
+                // Ctrl-C waits for one run at most (≤ ~15 s at 0.5 cm).
+                throw_if_interrupted();
+              });
     const CalibrationResult result = calibrate(triaxial, spec_.settings);
     throw_if_interrupted();
     std::optional<CalibrationResult> second;
@@ -63,20 +63,22 @@ class CalibrationJob : public Job {
     std::vector<std::pair<double, SpecimenCurve>> compared;
     for (double eta : spec_.compare_eta) compared.emplace_back(eta, run_specimen(triaxial, eta));
     if (spec_.specimen == SpecimenType::element) {
-      context.steps = static_cast<long>(result.model_runs + (second ? second->model_runs : 0) +
-                                        static_cast<int>(compared.size())) *
-                      spec_.test.increments;
+      context.steps =
+          static_cast<long>(result.model_runs + (second ? second->model_runs : 0) + static_cast<int>(compared.size())) *
+          spec_.test.increments;
     } else {
       context.steps = 0;
       for (const MpmRunRecord& r : runs_) context.steps += r.steps;
     }
 
     if (!result.work_decreases_with_eta)
-      std::fprintf(stderr, "warning: W(η) does not decrease strictly along the scan (see work_scan.csv): "
-                           "the dissipated-work criterion may match more than one η\n");
+      std::fprintf(stderr,
+                   "warning: W(η) does not decrease strictly along the scan (see work_scan.csv): "
+                   "the dissipated-work criterion may match more than one η\n");
     if (result.at_bound)
-      std::fprintf(stderr, "warning: the fitted η = %s lies on a bound of [%s, %s]\n", format_significant(result.eta).c_str(),
-                   format_significant(spec_.settings.eta_min).c_str(), format_significant(spec_.settings.eta_max).c_str());
+      std::fprintf(stderr, "warning: the fitted η = %s lies on a bound of [%s, %s]\n",
+                   format_significant(result.eta).c_str(), format_significant(spec_.settings.eta_min).c_str(),
+                   format_significant(spec_.settings.eta_max).c_str());
 
     CalibrationOutcome outcome{result, std::move(second), std::move(compared), runs_, grid_};
     write_calibration_summary(spec_, outcome, context.summary);
@@ -91,11 +93,11 @@ class CalibrationJob : public Job {
     } catch (const CalibrationFailure& e) {
       throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): " + e.what());
     } catch (const PointIntegrationFailure& e) {
-      throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): the element test failed: " +
-                       e.what());
+      throw RunFailure(std::string("calibration (") + to_string(settings.mode) +
+                       "): the element test failed: " + e.what());
     } catch (const mpm::StepFailure& e) {
-      throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): the MPM specimen failed: " +
-                       e.what());
+      throw RunFailure(std::string("calibration (") + to_string(settings.mode) +
+                       "): the MPM specimen failed: " + e.what());
     }
   }
 
@@ -126,7 +128,6 @@ class CalibrationJob : public Job {
     runs_.push_back(k);
     grid_ = {r.cells_r, r.cells_z, r.cell_r_m, r.cell_z_m, r.particles, r.ramp_time_s};
   }
-
 
   CalibrationScene spec_;
   std::vector<MpmRunRecord> runs_;

@@ -22,7 +22,9 @@ json specimen_json(const CalibrationScene& scene, const CalibrationOutcome& o) {
   const CalibrationResult& r = o.result;
   const TriaxialSpecimen& size = scene.test.specimen;
   if (scene.specimen == SpecimenType::element)
-    return {{"type", to_string(scene.specimen)}, {"height_m", size.height_m}, {"diameter_m", size.diameter_m},
+    return {{"type", to_string(scene.specimen)},
+            {"height_m", size.height_m},
+            {"diameter_m", size.diameter_m},
             {"increments", scene.test.increments}};
   const MpmTriaxialConfig& m = scene.mpm;
   json s = {{"type", to_string(scene.specimen)},
@@ -54,7 +56,8 @@ json specimen_json(const CalibrationScene& scene, const CalibrationOutcome& o) {
                {"seconds_per_run", seconds / n},
                {"slowest_run_s", slowest}};
   // The fitted η's run: the calibration evaluates it last before the comparisons.
-  const auto fitted = std::find_if(o.runs.rbegin(), o.runs.rend(), [&](const MpmRunRecord& k) { return k.eta == r.eta; });
+  const auto fitted =
+      std::find_if(o.runs.rbegin(), o.runs.rend(), [&](const MpmRunRecord& k) { return k.eta == r.eta; });
   if (fitted != o.runs.rend())
     s["fitted_run"] = {{"steps", fitted->steps},
                        {"wall_time_s", fitted->wall_time_s},
@@ -110,9 +113,10 @@ void write_calibration_summary(const CalibrationScene& scene, const CalibrationO
   s["calibration_wall_time_s"] = r.wall_time_s;
   s["rms_q_error_kPa"] = 1e-3 * r.rms_q_error_Pa;
   s["peak_q_kPa"] = 1e-3 * *peak;
-  s["axial_strain_at_peak"] = r.fitted.axial_strain[static_cast<std::size_t>(peak - r.fitted.deviatoric_stress_Pa.begin())];
-  s["residual_q_kPa"] = 1e-3 * interpolate_linear(r.fitted.axial_strain, r.fitted.deviatoric_stress_Pa,
-                                                  scene.lab.axial_strain.back());
+  s["axial_strain_at_peak"] =
+      r.fitted.axial_strain[static_cast<std::size_t>(peak - r.fitted.deviatoric_stress_Pa.begin())];
+  s["residual_q_kPa"] =
+      1e-3 * interpolate_linear(r.fitted.axial_strain, r.fitted.deviatoric_stress_Pa, scene.lab.axial_strain.back());
   s["phi_peak_deg"] = scene.material.friction_peak_rad / kDegree;
   s["phi_peak_from_lab_peak"] = scene.fitted_peak_friction;
   s["specimen"] = specimen_json(scene, o);
@@ -129,7 +133,8 @@ void write_calibration_summary(const CalibrationScene& scene, const CalibrationO
   if (second) s["other_mode"] = fit_json(*second);
   json curves = json::array();
   for (const auto& [eta, curve] : o.compared)
-    curves.push_back({{"eta", eta}, {"dissipated_work_J", work_of(scene, curve)},
+    curves.push_back({{"eta", eta},
+                      {"dissipated_work_J", work_of(scene, curve)},
                       {"relative_to_lab", work_of(scene, curve) / r.dissipated_work_lab_J - 1.0}});
   s["compared_eta"] = curves;
 }
@@ -141,8 +146,8 @@ void write_calibration_tables(const CalibrationScene& scene, const CalibrationOu
   const TriaxialSpecimen& specimen = scene.settings.specimen;
   const bool volumetric = !lab.volumetric_strain.empty();
   // One row per lab point: the lab and the fitted model side by side.
-  std::vector<std::string> columns = {"axial_strain", "axial_displacement_m", "q_lab_kPa", "q_model_kPa",
-                                      "axial_force_lab_N", "axial_force_model_N"};
+  std::vector<std::string> columns = {"axial_strain", "axial_displacement_m", "q_lab_kPa",
+                                      "q_model_kPa",  "axial_force_lab_N",    "axial_force_model_N"};
   if (second) columns.emplace_back("q_other_mode_kPa");
   if (volumetric) columns.emplace_back("volumetric_strain_lab");
   columns.emplace_back("volumetric_strain_model");
@@ -151,8 +156,12 @@ void write_calibration_tables(const CalibrationScene& scene, const CalibrationOu
   for (std::size_t i = 0; i < lab.axial_strain.size(); ++i) {
     const double e = lab.axial_strain[i];
     const double q_model = interpolate_linear(r.fitted.axial_strain, r.fitted.deviatoric_stress_Pa, e);
-    std::vector<double> row = {e, e * specimen.height_m, 1e-3 * lab.deviatoric_stress_Pa[i], 1e-3 * q_model,
-                               lab.deviatoric_stress_Pa[i] * specimen.area_m2(), q_model * specimen.area_m2()};
+    std::vector<double> row = {e,
+                               e * specimen.height_m,
+                               1e-3 * lab.deviatoric_stress_Pa[i],
+                               1e-3 * q_model,
+                               lab.deviatoric_stress_Pa[i] * specimen.area_m2(),
+                               q_model * specimen.area_m2()};
     if (second)
       row.push_back(1e-3 * interpolate_linear(second->fitted.axial_strain, second->fitted.deviatoric_stress_Pa, e));
     if (volumetric) row.push_back(lab.volumetric_strain[i]);
@@ -166,7 +175,8 @@ void write_calibration_tables(const CalibrationScene& scene, const CalibrationOu
   CsvTable model({"axial_strain", "q_kPa", "volumetric_strain", "axial_displacement_m", "axial_force_N"});
   for (std::size_t i = 0; i < r.fitted.axial_strain.size(); ++i)
     model.add_row({r.fitted.axial_strain[i], 1e-3 * r.fitted.deviatoric_stress_Pa[i], r.fitted.volumetric_strain[i],
-                   r.fitted.axial_strain[i] * specimen.height_m, r.fitted.deviatoric_stress_Pa[i] * specimen.area_m2()});
+                   r.fitted.axial_strain[i] * specimen.height_m,
+                   r.fitted.deviatoric_stress_Pa[i] * specimen.area_m2()});
   model.write(out_dir / "model_curve.csv");
 
   CsvTable scan({"eta", "dissipated_work_J", "relative_to_lab"});
@@ -194,11 +204,13 @@ void write_calibration_plots(const CalibrationScene& scene, const CalibrationOut
   const std::string mode = to_string(r.mode);
   // Fig. 3 of the paper: lab points, the fitted curve and the curves for η = 2.5 (blue) and 15 (red).
   const std::vector<const char*> colours = {"blue", "red", "orange", "purple", "brown"};
-  Plot fig3{"Drained triaxial, σ3 = " + format_significant(1e-3 * scene.test.cell_pressure_Pa) + " kPa: " +
-                fs::path(lab.source).filename().string() + " and the SSMC",
-            "axial strain ε_a (%)", "deviatoric stress q (kPa)", {}};
-  fig3.series.push_back({percent(lab.axial_strain), scaled(lab.deviatoric_stress_Pa, 1e-3), "lab",
-                         "points pt 7 ps 0.8 lc rgb 'black'"});
+  Plot fig3{"Drained triaxial, σ3 = " + format_significant(1e-3 * scene.test.cell_pressure_Pa) +
+                " kPa: " + fs::path(lab.source).filename().string() + " and the SSMC",
+            "axial strain ε_a (%)",
+            "deviatoric stress q (kPa)",
+            {}};
+  fig3.series.push_back(
+      {percent(lab.axial_strain), scaled(lab.deviatoric_stress_Pa, 1e-3), "lab", "points pt 7 ps 0.8 lc rgb 'black'"});
   fig3.series.push_back({percent(r.fitted.axial_strain), scaled(r.fitted.deviatoric_stress_Pa, 1e-3),
                          "fit by " + mode + ": η = " + format_significant(r.eta, 3), "lines lw 3 lc rgb 'dark-green'"});
   if (second)
@@ -208,13 +220,15 @@ void write_calibration_plots(const CalibrationScene& scene, const CalibrationOut
   for (std::size_t k = 0; k < o.compared.size(); ++k)
     fig3.series.push_back({percent(o.compared[k].second.axial_strain),
                            scaled(o.compared[k].second.deviatoric_stress_Pa, 1e-3),
-                           "η = " + format_significant(o.compared[k].first, 3), std::string("lines lw 2 lc rgb '") +
-                                                                    colours[k % colours.size()] + "'"});
+                           "η = " + format_significant(o.compared[k].first, 3),
+                           std::string("lines lw 2 lc rgb '") + colours[k % colours.size()] + "'"});
   write_png(fig3, plots / "fig3_q_axial_strain.png");
 
   Plot force{"Force–displacement: the areas matched (W_{lab} = " + format_significant(r.dissipated_work_lab_J) +
                  " J, W_{model} = " + format_significant(r.dissipated_work_model_J) + " J)",
-             "axial displacement δ = ε_a·H (mm)", "axial force F = q·A (N)", {}};
+             "axial displacement δ = ε_a·H (mm)",
+             "axial force F = q·A (N)",
+             {}};
   force.series.push_back({scaled(lab.axial_strain, 1e3 * specimen.height_m),
                           scaled(lab.deviatoric_stress_Pa, specimen.area_m2()), "lab",
                           "points pt 7 ps 0.8 lc rgb 'black'"});
@@ -223,8 +237,8 @@ void write_calibration_plots(const CalibrationScene& scene, const CalibrationOut
                           "model, η = " + format_significant(r.eta, 3), "lines lw 3 lc rgb 'dark-green'"});
   Plot volume{"Volumetric strain (compression positive)", "axial strain ε_a (%)", "ε_v (%)", {}};
   if (!lab.volumetric_strain.empty())
-    volume.series.push_back({percent(lab.axial_strain), percent(lab.volumetric_strain), "lab",
-                             "points pt 7 ps 0.8 lc rgb 'black'"});
+    volume.series.push_back(
+        {percent(lab.axial_strain), percent(lab.volumetric_strain), "lab", "points pt 7 ps 0.8 lc rgb 'black'"});
   volume.series.push_back({percent(r.fitted.axial_strain), percent(r.fitted.volumetric_strain),
                            "model, η = " + format_significant(r.eta, 3), "lines lw 3 lc rgb 'dark-green'"});
   write_png_stack({force, volume}, plots / "force_displacement_volumetric.png");
@@ -237,8 +251,12 @@ void write_calibration_plots(const CalibrationScene& scene, const CalibrationOut
   }
   scan.series.push_back(model);
   scan.series.push_back({{scene.settings.eta_min, scene.settings.eta_max},
-                         {r.dissipated_work_lab_J, r.dissipated_work_lab_J}, "W_{lab}", "lines lc rgb 'black'"});
-  scan.series.push_back({{r.eta}, {r.dissipated_work_model_J}, "fit: η = " + format_significant(r.eta, 4),
+                         {r.dissipated_work_lab_J, r.dissipated_work_lab_J},
+                         "W_{lab}",
+                         "lines lc rgb 'black'"});
+  scan.series.push_back({{r.eta},
+                         {r.dissipated_work_model_J},
+                         "fit: η = " + format_significant(r.eta, 4),
                          "points pt 6 ps 2 lw 2 lc rgb 'red'"});
   write_png(scan, plots / "work_against_eta.png");
 }

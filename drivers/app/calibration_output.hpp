@@ -43,7 +43,8 @@ struct CalibrationOutcome {
   SpecimenGrid grid;                                       ///< mpm only
 };
 
-void write_calibration_summary(const CalibrationScene& scene, const CalibrationOutcome& outcome, nlohmann::json& summary);
+void write_calibration_summary(const CalibrationScene& scene, const CalibrationOutcome& outcome,
+                               nlohmann::json& summary);
 void write_calibration_tables(const CalibrationScene& scene, const CalibrationOutcome& outcome,
                               const std::filesystem::path& out_dir);
 void write_calibration_plots(const CalibrationScene& scene, const CalibrationOutcome& outcome,

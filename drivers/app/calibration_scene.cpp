@@ -30,8 +30,8 @@ mpm::ModelSize specimen_size(const MpmTriaxialConfig& m) {
   const double specimen_cells = std::ceil(radius / m.cell_m) * std::ceil(m.specimen.height_m / m.cell_m);
   mpm::ModelSize size;
   size.nodes = static_cast<std::size_t>(std::min(1e15, (cells_r + 1.0) * (cells_z + 1.0)));
-  size.particles = static_cast<std::size_t>(
-      std::min(1e15, specimen_cells * m.particles_per_cell * m.particles_per_cell));
+  size.particles =
+      static_cast<std::size_t>(std::min(1e15, specimen_cells * m.particles_per_cell * m.particles_per_cell));
   return size;
 }
 
@@ -53,9 +53,10 @@ void read_mpm_specimen(SceneReader& specimen, MpmTriaxialConfig& m) {
   m.radial_margin = specimen.number("radial_margin", Range::positive(10.0), 0.5);
   require_fits_in_memory(specimen_size(m), "specimen.cell_m",
                          "use a larger specimen.cell_m or fewer specimen.particles_per_cell");
-  specimen.finish("an mpm specimen (type, height_m, diameter_m, cell_m, platen_velocity_m_s, platens, "
-                  "shape_function, courant, flip_fraction, particles_per_cell, density_kg_m3, output_strain_step, "
-                  "radial_margin)");
+  specimen.finish(
+      "an mpm specimen (type, height_m, diameter_m, cell_m, platen_velocity_m_s, platens, "
+      "shape_function, courant, flip_fraction, particles_per_cell, density_kg_m3, output_strain_step, "
+      "radial_margin)");
 }
 
 }  // namespace
@@ -87,7 +88,8 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
                                    format_significant(spec.settings.eta_min) + ", " +
                                    format_significant(spec.settings.eta_max) + "]");
   spec.settings.eta_start = spec.eta_start;
-  spec.compare_eta = scene.optional_numbers("compare_eta", Range::positive(1e4), 0, 5).value_or(std::vector<double>{2.5, 15.0});
+  spec.compare_eta =
+      scene.optional_numbers("compare_eta", Range::positive(1e4), 0, 5).value_or(std::vector<double>{2.5, 15.0});
 
   spec.test.cell_pressure_Pa = 1e3 * scene.number("cell_pressure_kPa", Range::positive(1e7, "kPa"), 1.72);
   SceneReader specimen = scene.object("specimen");
@@ -105,8 +107,9 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
     read_mpm_specimen(specimen, m);
     for (const char* key : {"increments", "strain_rate_per_s"})
       if (scene.has(key))
-        scene.fail(key, "belongs to the element test; an mpm specimen (specimen.type = mpm) is resolved by its "
-                        "cell_m and time step, and strained by its platen_velocity_m_s");
+        scene.fail(key,
+                   "belongs to the element test; an mpm specimen (specimen.type = mpm) is resolved by its "
+                   "cell_m and time step, and strained by its platen_velocity_m_s");
   } else {
     specimen.finish("an element specimen (type, height_m, diameter_m; the MPM keys need \"type\": \"mpm\")");
     spec.test.increments = scene.integer("increments", 10, 1'000'000, 1000);
@@ -120,8 +123,7 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
       scene.number("derivative_step_ln_eta", Range::positive(0.5), mpm_specimen ? 0.1 : 1e-4);
   spec.settings.parameter_tolerance =
       scene.number("parameter_tolerance", Range::open(0.0, 1.0), mpm_specimen ? 1e-4 : 1e-8);
-  spec.settings.work_tolerance =
-      scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
+  spec.settings.work_tolerance = scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
 
   spec.fitted_peak_friction = scene.boolean("fit_peak_friction", false);
   if (spec.fitted_peak_friction) {

@@ -61,44 +61,48 @@ void add_sweep(CLI::App& app, SweepOptions& o) {
       ->required()
       ->allow_extra_args(false);
   sweep.add_option("--out", o.out, "output folder (default results/<scene name>-sweep)")->type_name("DIR");
-  sweep.add_option("--emit", o.emit,
-                   "write the cases for a scheduler instead (DIR/cases.tsv, one scene per case, slurm.sbatch, "
-                   "parallel.sh)")
+  sweep
+      .add_option("--emit", o.emit,
+                  "write the cases for a scheduler instead (DIR/cases.tsv, one scene per case, slurm.sbatch, "
+                  "parallel.sh)")
       ->type_name("DIR");
   sweep.add_option("--jobs", o.jobs, "runs side by side (default 1)")->check(CLI::Range(1, 256));
   sweep.add_option("--threads", o.threads, "OpenMP threads per case (default 1)")->check(CLI::Range(1, 256));
   sweep.add_flag("--force", o.force, "replace a folder that holds files ffp did not write");
-  sweep.add_option_function<std::string>(
-           "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
-           "local (default) or slurm: submit the emitted job array with sbatch, wait, collect")
+  sweep
+      .add_option_function<std::string>(
+          "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
+          "local (default) or slurm: submit the emitted job array with sbatch, wait, collect")
       ->check(kSchedulers);
 }
 
 void add_collect(CLI::App& app, std::filesystem::path& folder) {
   CLI::App& collect = *app.add_subcommand(
-      "collect", "Build DIR/sweep.csv from an emitted sweep's finished cases; list the missing and failed ones "
-                 "(exit 1 while any is)");
+      "collect",
+      "Build DIR/sweep.csv from an emitted sweep's finished cases; list the missing and failed ones "
+      "(exit 1 while any is)");
   collect.add_option("DIR", folder, "a folder written by ffp sweep --emit (or --scheduler slurm)")->required();
 }
 
 void add_report(CLI::App& app, ReportOptions& o) {
-  CLI::App& report = *app.add_subcommand(
-      "report", "Run the validation study (cached) and write DIR/report.md with figures");
+  CLI::App& report =
+      *app.add_subcommand("report", "Run the validation study (cached) and write DIR/report.md with figures");
   report.add_option("--out", o.out, "report folder (default report)")->type_name("DIR");
   report.add_option("--cache", o.cache, "run cache (default results/cache)")->type_name("DIR");
   report.add_option("--scenes", o.scenes, "folder of the scenes (default data/scenes)")->type_name("DIR");
   report.add_option("--only", o.only, "only the studies whose title contains TEXT");
   report.add_option("--jobs", o.jobs, "runs side by side (default one per core)")->check(CLI::Range(1, 64));
   report.add_flag("--force", o.force, "replace a folder that holds files ffp did not write");
-  report.add_option_function<std::string>(
-            "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
-            "local (default) or slurm: the uncached runs as Slurm job arrays")
+  report
+      .add_option_function<std::string>(
+          "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
+          "local (default) or slurm: the uncached runs as Slurm job arrays")
       ->check(kSchedulers);
 }
 
 void add_bench(CLI::App& app, BenchOptions& o) {
-  CLI::App& bench = *app.add_subcommand(
-      "bench", "Measure the end-to-end speed of representative scenes (median of repeats)");
+  CLI::App& bench =
+      *app.add_subcommand("bench", "Measure the end-to-end speed of representative scenes (median of repeats)");
   bench.add_option("--repeat", o.repeats, "runs of each scene (default 3)")->check(CLI::Range(1, 100));
   bench.add_option("--scenes", o.scenes, "folder of the scenes (default data/scenes)")->type_name("DIR");
 }

@@ -11,7 +11,7 @@ namespace ffp {
 
 struct RunOptions {
   std::string scene_file;
-  std::vector<std::string> overrides;     ///< --set key=value, in order
+  std::vector<std::string> overrides;  ///< --set key=value, in order
   std::optional<std::filesystem::path> out;
   bool quiet = false;
   bool force = false;  ///< replace an --out folder that holds files ffp did not write

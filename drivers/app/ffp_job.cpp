@@ -77,8 +77,11 @@ struct Extremes {
 class PenetrometerJob : public Job {
  public:
   PenetrometerJob(FfpScene scene, std::string name, mpm::ModelSize size)
-      : scene_(std::move(scene)), name_(std::move(name)), size_(size),
-        run_(std::make_unique<mpm::FfpRun>(scene_.model)), initial_dt_s_(run_->simulation().dt_s) {}
+      : scene_(std::move(scene)),
+        name_(std::move(name)),
+        size_(size),
+        run_(std::make_unique<mpm::FfpRun>(scene_.model)),
+        initial_dt_s_(run_->simulation().dt_s) {}
 
   void describe(std::ostream& out) const override {
     const mpm::Simulation& s = run_->simulation();
@@ -89,17 +92,18 @@ class PenetrometerJob : public Job {
     out << "particles: " << s.particles.size() << " (soil " << run_->soil_particles() << ")\n";
     describe_memory(out, size_);
     if (cpt()) {
-      out << "penetrometer: rigid (exact outline, no particles), pushed at " << -scene_.model.velocity_m_s
-          << " m/s to " << -scene_.model.velocity_m_s * scene_.end_time_s << " m\n";
+      out << "penetrometer: rigid (exact outline, no particles), pushed at " << -scene_.model.velocity_m_s << " m/s to "
+          << -scene_.model.velocity_m_s * scene_.end_time_s << " m\n";
     } else {
-      out << "penetrometer: " << (run_->deformable() ? "linear elastic particles" : "rigid (exact outline, no particles)")
-          << ", mass " << run_->penetrometer_mass_kg() << " kg\n";
+      out << "penetrometer: "
+          << (run_->deformable() ? "linear elastic particles" : "rigid (exact outline, no particles)") << ", mass "
+          << run_->penetrometer_mass_kg() << " kg\n";
     }
     out << "stages: " << s.stages.describe() << "\n";
     out << "CFL limit h_min/(c_p + |v|max): " << s.dt_limit_s << " s; time step " << s.dt_s << " s (Courant "
         << s.settings.courant << ", recomputed every step)\n";
-    out << "steps to end_time_s (at the initial step): about " << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s))
-        << "\n";
+    out << "steps to end_time_s (at the initial step): about "
+        << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s)) << "\n";
   }
 
   void run(RunContext& context) override;
@@ -133,7 +137,8 @@ class PenetrometerJob : public Job {
 CsvTable PenetrometerJob::history_table() const {
   std::vector<std::string> columns = {"time_s", "penetration_m", "velocity_m_s"};
   if (!cpt()) columns.push_back("deceleration_g");
-  for (const char* c : {"reaction_N", "contact_nodes", "soil_kinetic_energy_J", "dt_s", "impulse_N_s", "soil_intrusion_m"})
+  for (const char* c :
+       {"reaction_N", "contact_nodes", "soil_kinetic_energy_J", "dt_s", "impulse_N_s", "soil_intrusion_m"})
     columns.emplace_back(c);
   if (cpt()) columns.emplace_back("mean_pressure_kPa");
   return CsvTable(columns);
@@ -147,9 +152,9 @@ void PenetrometerJob::record_row(CsvTable& history) {
                                            ffp.velocity_down_m_s(), st.impulse_N_s, weight_N());
   std::vector<double> row = {sample.time_s, sample.penetration_m, sample.velocity_m_s};
   if (!cpt()) row.push_back(sample.deceleration_g);
-  row.insert(row.end(), {sample.reaction_N, static_cast<double>(st.contact_nodes),
-                         mpm::measure_body(s, ffp.soil_body()).kinetic_energy_J, s.dt_s, st.impulse_N_s,
-                         ffp.soil_intrusion_m()});
+  row.insert(row.end(),
+             {sample.reaction_N, static_cast<double>(st.contact_nodes),
+              mpm::measure_body(s, ffp.soil_body()).kinetic_energy_J, s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
   if (cpt()) row.push_back(1e-3 * sample.reaction_N / base_area_m2());
   history.add_row(row);
   samples_.push_back(sample);

@@ -89,10 +89,9 @@ void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name
                    line_plot(t, deceleration, "time (s)", "deceleration (g)", "deceleration", name),
                    line_plot(t, reaction, "time (s)", "reaction (N)", "reaction", name)},
                   plots / "time_histories.png");
-  write_png_stack(
-      {line_plot(depth, velocity, "penetration (m)", "velocity (m/s)", name + ": velocity profile", name),
-       line_plot(depth, deceleration, "penetration (m)", "deceleration (g)", "deceleration profile", name)},
-      plots / "depth_profiles.png");
+  write_png_stack({line_plot(depth, velocity, "penetration (m)", "velocity (m/s)", name + ": velocity profile", name),
+                   line_plot(depth, deceleration, "penetration (m)", "deceleration (g)", "deceleration profile", name)},
+                  plots / "depth_profiles.png");
 }
 
 void write_cpt_plot(std::span<const FfpSample> samples, const std::string& name, const fs::path& plots) {
@@ -108,8 +107,8 @@ void write_pressure_settlement_plot(std::span<const FfpSample> samples, const st
     ratio.push_back(s.penetration_m / curve.base_radius_m);
     factor.push_back(s.reaction_N / curve.base_area_m2 / curve.cohesion_Pa);
   }
-  Plot p = line_plot(ratio, factor, "settlement / radius s/R", "mean pressure / c'", name + ": pressure–settlement",
-                     name);
+  Plot p =
+      line_plot(ratio, factor, "settlement / radius s/R", "mean pressure / c'", name + ": pressure–settlement", name);
   const double n = curve.bearing_factor;
   p.series.push_back({{curve.from_ratio, curve.to_ratio}, {n, n}, "plateau mean"});
   p.key_position = "bottom right";

@@ -37,7 +37,8 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   if (soil.has("near_spacing_m")) {
     // A spacing in metres, the same at every mesh size; checked against mesh.min_cell_m in read_mesh.
     if (soil.has("particles_per_cell_near"))
-      soil.fail("near_spacing_m", "give either near_spacing_m (a length) or particles_per_cell_near (per min cell), not both");
+      soil.fail("near_spacing_m",
+                "give either near_spacing_m (a length) or particles_per_cell_near (per min cell), not both");
     d.soil.near_spacing_m = soil.number("near_spacing_m", Range::positive(1.0, "m"));
   } else {
     std::tie(d.soil.near_ppc_r, d.soil.near_ppc_z) = particles_per_cell(soil, "particles_per_cell_near", 3);
@@ -48,8 +49,9 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.near_depth_m =
       soil.number("near_depth_m", Range::closed(0.0, d.soil.depth_m, "m (≤ depth_m)"), d.soil.depth_m);
   d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
-  soil.finish("soil (depth_m, radius_m, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, near_radius_m, "
-              "near_depth_m, disconnected_density_ratio)");
+  soil.finish(
+      "soil (depth_m, radius_m, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, near_radius_m, "
+      "near_depth_m, disconnected_density_ratio)");
   return cohesion_Pa;
 }
 
@@ -72,15 +74,19 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
   if (kind == PenetrometerKind::cpt) {
     for (const char* key : {"mass_kg", "impact_velocity_m_s", "deformable", "rigid_body_force", "external_force_N"})
       if (f.has(key))
-        f.fail(key, "a cpt scene pushes a rigid penetrometer at push_velocity_m_s: it has no mass, impact or "
-                    "rigid-body force (use kind ffp)");
+        f.fail(key,
+               "a cpt scene pushes a rigid penetrometer at push_velocity_m_s: it has no mass, impact or "
+               "rigid-body force (use kind ffp)");
     speed = f.number("push_velocity_m_s", Range::positive(100.0, "m/s (downward)"));
     d.prescribed = true;
     d.velocity_m_s = -speed;
-    f.finish("the ffp of a cpt scene (tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, push_velocity_m_s)");
+    f.finish(
+        "the ffp of a cpt scene (tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
+        "push_velocity_m_s)");
     return speed;
   }
-  if (f.has("push_velocity_m_s")) f.fail("push_velocity_m_s", "a prescribed push is kind cpt; an ffp falls freely from impact_velocity_m_s");
+  if (f.has("push_velocity_m_s"))
+    f.fail("push_velocity_m_s", "a prescribed push is kind cpt; an ffp falls freely from impact_velocity_m_s");
   d.mass_kg = f.number("mass_kg", Range::positive(1e6, "kg"));
   speed = f.number("impact_velocity_m_s", Range::non_negative(1000.0, "m/s (downward)"));
   d.velocity_m_s = -speed;
@@ -97,13 +103,15 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
   } else {
     for (const char* key : {"E_kPa", "nu", "density_kg_m3", "particles_per_cell"})
       if (f.has(key))
-        f.fail(key, "a rigid penetrometer has no stiffness or particles: give ffp.deformable {E_kPa, nu, "
-                    "particles_per_cell} for an elastic one");
+        f.fail(key,
+               "a rigid penetrometer has no stiffness or particles: give ffp.deformable {E_kPa, nu, "
+               "particles_per_cell} for an elastic one");
     d.force = f.choice("rigid_body_force", mpm::kRigidBodyForceNames, mpm::RigidBodyForce::contact_impulse);
     d.external_force_N = f.number("external_force_N", Range::closed(-1e9, 1e9, "N (+ up)"), 0.0);
   }
-  f.finish("ffp (mass_kg, impact_velocity_m_s, tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
-           "deformable, rigid_body_force, external_force_N)");
+  f.finish(
+      "ffp (mass_kg, impact_velocity_m_s, tip, cone_apex_angle_deg, base_radius_m, edge_radius_m, body_length_m, "
+      "deformable, rigid_body_force, external_force_N)");
   return speed;
 }
 
@@ -112,11 +120,13 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   const bool rough = c.boolean("rough", false);
   if (rough && c.has("delta_deg"))
     c.fail("delta_deg", "give either delta_deg (Coulomb, μ = tan δ) or rough: true (no slip), not both");
-  if (!rough && !c.has("delta_deg")) c.fail("delta_deg", "is required (the FFP–soil friction angle), or give rough: true");
+  if (!rough && !c.has("delta_deg"))
+    c.fail("delta_deg", "is required (the FFP–soil friction angle), or give rough: true");
   d.contact.rough = rough;
   if (!rough) d.contact.friction = std::tan(c.number("delta_deg", Range::half_open(0.0, 90.0, "degrees")) * kDegree);
   // A cap on the correction's strain per step (the paper's code: 0.75), 0 for none.
-  d.contact.velocity_scaling = c.number("velocity_scaling", Range::closed(0.0, 10.0, "(strain per step; 0: no cap)"), 0.75);
+  d.contact.velocity_scaling =
+      c.number("velocity_scaling", Range::closed(0.0, 10.0, "(strain per step; 0: no cap)"), 0.75);
   // Nodes up to half a cell outside the outline take part: the contact surface is then centred on the
   // outline at every h (with 0, only nodes inside: the cone is 0.38 h thinner and soil intrudes 0.75 h).
   d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.5);
@@ -138,21 +148,24 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   // Sizes default to multiples of min_cell_m, so that --set mesh.min_cell_m=… refines everything.
   mesh.max_cell_m = m.number("max_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 3.0 * h);
   mesh.below_cell_m = m.number("below_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 2.0 * h);
-  mesh.fine_radius_m = m.number("fine_radius_m", Range::open(d.shape.base_radius_m, kMaxLength_m, "m (> ffp.base_radius_m)"),
-                                std::max(0.15, d.shape.base_radius_m + 2.0 * h));
+  mesh.fine_radius_m =
+      m.number("fine_radius_m", Range::open(d.shape.base_radius_m, kMaxLength_m, "m (> ffp.base_radius_m)"),
+               std::max(0.15, d.shape.base_radius_m + 2.0 * h));
   mesh.band_below_m = m.number("band_below_m", Range::positive(kMaxLength_m, "m"), 0.05);
   mesh.fine_above_m = m.number("fine_above_m", Range::positive(kMaxLength_m, "m"), 0.3);
   mesh.air_above_m = m.number("air_above_m", Range::positive(kMaxLength_m, "m"), 0.1);
   mesh.growth = m.number("growth", Range{1.0, 2.0, true, false, ""}, 1.2);
   mesh.tip_offset_cells = m.number("tip_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0);
   if (d.soil.near_spacing_m && *d.soil.near_spacing_m > h)
-    scene.fail("soil.near_spacing_m", "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
+    scene.fail("soil.near_spacing_m",
+               "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
   if (d.shape.base_radius_m + h > d.soil.radius_m)
     m.fail("min_cell_m", "leaves no cell between the penetrometer and the chamber wall");
   if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)
     m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
-  m.finish("mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth, "
-           "tip_offset_cells)");
+  m.finish(
+      "mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth, "
+      "tip_offset_cells)");
 }
 
 void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {
@@ -169,7 +182,8 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
   if (kind == PenetrometerKind::cpt) {
     // A quasi-static push may damp the waves that an undamped explicit model keeps forever.
     s.local_damping = solver.number("local_damping", Range::half_open(0.0, 1.0), 0.0);
-    solver.finish("solver (shape_function, transfer, flip_fraction, pic_blend, courant, strain_smoothing, local_damping)");
+    solver.finish(
+        "solver (shape_function, transfer, flip_fraction, pic_blend, courant, strain_smoothing, local_damping)");
   } else {
     if (solver.has("local_damping"))
       solver.fail("local_damping", "the FFP impact is dynamic: no artificial damping (paper section 4)");
@@ -207,7 +221,8 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
     // A flat punch in a cohesive soil: the bearing benchmark (punch_smooth/rough.json).
     BearingPlateau b;
     b.cohesion_Pa = cohesion_Pa;
-    if (auto window = scene.optional_numbers("plateau_settlement_ratio", Range::open(0.0, 1.0, "(settlement / base_radius_m)"), 2, 2)) {
+    if (auto window = scene.optional_numbers("plateau_settlement_ratio",
+                                             Range::open(0.0, 1.0, "(settlement / base_radius_m)"), 2, 2)) {
       b.from_ratio = (*window)[0];
       b.to_ratio = (*window)[1];
       if (b.to_ratio <= b.from_ratio) scene.fail("plateau_settlement_ratio", "must be [from, to] with from < to");
@@ -218,7 +233,8 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
                                                  " m, beyond the push (end_depth_m)");
     out.bearing = b;
   } else if (scene.has("plateau_settlement_ratio")) {
-    scene.fail("plateau_settlement_ratio", "applies to a cpt scene with ffp.tip flat in a soil with c_peak_kPa > 0 only");
+    scene.fail("plateau_settlement_ratio",
+               "applies to a cpt scene with ffp.tip flat in a soil with c_peak_kPa > 0 only");
   }
 
   SceneReader output = scene.object("output");
@@ -226,7 +242,8 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
   o.history_interval_s =
       output.number("history_interval_s", Range::positive(kMaxTime_s, "s"), std::min(2e-4, out.end_time_s / 100.0));
   if (out.end_time_s / o.history_interval_s > 1e6) output.fail("history_interval_s", "gives more than 10^6 rows");
-  if (auto times = output.optional_numbers("field_times_s", Range::closed(0.0, out.end_time_s, "s (≤ end_time_s)"), 0, 1000)) {
+  if (auto times =
+          output.optional_numbers("field_times_s", Range::closed(0.0, out.end_time_s, "s (≤ end_time_s)"), 0, 1000)) {
     o.field_times_s = *times;
   } else {
     // Fig. 9 shows t = 0.04 s and 0.06 s; a CPT (and a short run) gets its end state.

@@ -51,8 +51,8 @@ class IntegrationErrorJob : public Job {
     const std::vector<std::string> titles = {"SSMC", "MC"};  // gnuplot reads '_' as a subscript
 
     // law: 0 ssmc, 1 mohr_coulomb. Errors relative (see drivers/integration_study.hpp).
-    CsvTable table({"law", "increments", "wall_time_s", "q_error_end", "volumetric_strain_error_end",
-                    "q_error_path", "volumetric_strain_error_path", "peak_q_error", "peak_q_kPa"});
+    CsvTable table({"law", "increments", "wall_time_s", "q_error_end", "volumetric_strain_error_end", "q_error_path",
+                    "volumetric_strain_error_path", "peak_q_error", "peak_q_kPa"});
     std::vector<Series> series;
     long steps = 0;
     for (std::size_t l = 0; l < laws.size(); ++l) {
@@ -60,7 +60,8 @@ class IntegrationErrorJob : public Job {
       study.law = laws[l].second;
       const TriaxialErrorResult result = run_triaxial_error_study(study, [&](const std::string& stage) {
         throw_if_interrupted();
-        if (context.show_progress) std::fprintf(stderr, "integration_error: %s triaxial, %s\n", laws[l].first.c_str(), stage.c_str());
+        if (context.show_progress)
+          std::fprintf(stderr, "integration_error: %s triaxial, %s\n", laws[l].first.c_str(), stage.c_str());
       });
       steps += result.total_increments;
       Series q{{}, {}, titles[l] + ": q at the end", "linespoints"};
@@ -97,7 +98,11 @@ class IntegrationErrorJob : public Job {
     }
     table.write(context.out_dir / "triaxial_error.csv");
     Plot plot{"Drained triaxial to ε_a = " + format(100 * study_.axial_strain_max) + " %: error against wall time",
-              "wall time of one run (s)", "relative error against the reference", series, true, true};
+              "wall time of one run (s)",
+              "relative error against the reference",
+              series,
+              true,
+              true};
     plot.key_position = "top right";
     write_png(plot, plots / "error_vs_wall_time.png");
 

@@ -86,7 +86,8 @@ class InverseJob : public Job {
   void describe(std::ostream& out) const override {
     out << "inverse: " << scene_.parameters.size() << " parameter(s) of " << scene_.forward_scene.string() << "; "
         << residual_count() << " residuals";
-    if (scene_.profile) out << " (" << scene_.profile_points << " profile depths to " << target_.depth_m.back() << " m)";
+    if (scene_.profile)
+      out << " (" << scene_.profile_points << " profile depths to " << target_.depth_m.back() << " m)";
     out << "; each Jacobian is " << scene_.parameters.size() + 1 << " runs side by side\n";
   }
 
@@ -103,8 +104,10 @@ class InverseJob : public Job {
     const double profile_factor = scene_.profile_weight / scene_.profile_scale_g / std::sqrt(scene_.profile_points);
     if (scene_.profile)
       for (double z : depths_) r.push_back(profile_factor * (run.profile.at(z) - target_.at(z)));
-    if (const auto& t = scene_.peak_deceleration_g) r.push_back(t->weight * (run.peak_deceleration_g - t->value) / t->scale);
-    if (const auto& t = scene_.final_penetration_m) r.push_back(t->weight * (run.final_penetration_m - t->value) / t->scale);
+    if (const auto& t = scene_.peak_deceleration_g)
+      r.push_back(t->weight * (run.peak_deceleration_g - t->value) / t->scale);
+    if (const auto& t = scene_.final_penetration_m)
+      r.push_back(t->weight * (run.final_penetration_m - t->value) / t->scale);
     return r;
   }
 
@@ -124,7 +127,8 @@ class InverseJob : public Job {
 
 void InverseJob::run(RunContext& context) {
   const fs::path runs = context.out_dir / "runs";
-  const int jobs = context.jobs > 0 ? context.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs =
+      context.jobs > 0 ? context.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const Scheduler scheduler = context.slurm ? Scheduler::slurm : Scheduler::local;
   int batches = 0, failed = 0;
   std::string last_failure;
@@ -135,7 +139,8 @@ void InverseJob::run(RunContext& context) {
   };
   const BatchEvaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
     ++batches;
-    if (context.show_progress) std::fprintf(stderr, "inverse %s: batch %d, %zu model run(s)\n", name_.c_str(), batches, points.size());
+    if (context.show_progress)
+      std::fprintf(stderr, "inverse %s: batch %d, %zu model run(s)\n", name_.c_str(), batches, points.size());
     const std::vector<RunOutcome> outcomes = run_points(points);
     std::vector<std::vector<double>> out;
     for (const RunOutcome& o : outcomes) {
@@ -161,7 +166,8 @@ void InverseJob::run(RunContext& context) {
   try {
     fit = fit_bounded_least_squares(scene_.parameters, residual_count(), evaluate, scene_.fit);
   } catch (const std::runtime_error& e) {
-    throw RunFailure(std::string("inverse: ") + e.what() + (last_failure.empty() ? "" : " (last run error: " + last_failure + ")"));
+    throw RunFailure(std::string("inverse: ") + e.what() +
+                     (last_failure.empty() ? "" : " (last run error: " + last_failure + ")"));
   }
 
   std::vector<double> initial;

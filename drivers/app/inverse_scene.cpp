@@ -52,7 +52,8 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
   out.forward_scene = (fs::path(forward).is_absolute() ? fs::path(forward) : scene_dir / forward).lexically_normal();
   std::error_code error;
   if (!fs::is_regular_file(out.forward_scene, error))
-    scene.fail("forward_scene", "'" + out.forward_scene.string() + "' is not a file (paths are relative to the scene's folder)");
+    scene.fail("forward_scene",
+               "'" + out.forward_scene.string() + "' is not a file (paths are relative to the scene's folder)");
   json forward_json;
   try {
     forward_json = load_scene_file(out.forward_scene.string());
@@ -88,7 +89,8 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
     q.upper = p.number("upper", Range::open(q.lower, std::numeric_limits<double>::max(), "(> lower)"));
     q.initial = p.number("initial", Range::closed(q.lower, q.upper, "(within [lower, upper])"));
     // 2 % of the range: beyond the cell-crossing ripple of the MPM answer, small against the bounds.
-    q.step = p.number("step", Range::open(0.0, q.upper - q.lower, "(> 0 and < upper − lower)"), 0.02 * (q.upper - q.lower));
+    q.step =
+        p.number("step", Range::open(0.0, q.upper - q.lower, "(> 0 and < upper − lower)"), 0.02 * (q.upper - q.lower));
     p.finish("parameters[] (key, initial, lower, upper, step)");
     out.parameters.push_back(q);
   }
@@ -97,7 +99,9 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
   // and so the parameter whose value it was.
   const std::string refuses = ": the forward scene refuses it: ";
   for (const char* what : {"initial", "lower", "upper"}) {
-    auto value_of = [&](const FitParameter& q) { return what[0] == 'i' ? q.initial : what[0] == 'l' ? q.lower : q.upper; };
+    auto value_of = [&](const FitParameter& q) {
+      return what[0] == 'i' ? q.initial : what[0] == 'l' ? q.lower : q.upper;
+    };
     std::vector<std::string> overrides = out.forward_overrides;
     for (const FitParameter& q : out.parameters) overrides.push_back(assignment(q.name, value_of(q)));
     try {
@@ -130,11 +134,14 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
     pr.finish("profile (points, weight, scale_g)");
     if (out.profile_weight == 0.0) out.profile = false;
   }
-  out.peak_deceleration_g = read_target(scene, "peak_deceleration", "target_g", Range::open(-1.0, 1e5, "g"), "scale_g", 1.0);
+  out.peak_deceleration_g =
+      read_target(scene, "peak_deceleration", "target_g", Range::open(-1.0, 1e5, "g"), "scale_g", 1.0);
   out.final_penetration_m =
       read_target(scene, "final_penetration", "target_m", Range::positive(100.0, "m"), "scale_m", 0.01);
   if (!out.profile && !out.peak_deceleration_g && !out.final_penetration_m)
-    scene.fail("record", "nothing to fit: give a record (its profile), peak_deceleration {target_g} or final_penetration {target_m}");
+    scene.fail(
+        "record",
+        "nothing to fit: give a record (its profile), peak_deceleration {target_g} or final_penetration {target_m}");
 
   out.fit.max_iterations = scene.integer("max_iterations", 1, 200, 15);
   out.fit.function_tolerance = scene.number("function_tolerance", Range::open(0.0, 1.0), 1e-3);

@@ -25,9 +25,9 @@ struct ScalarTarget {
 };
 
 struct InverseScene {
-  std::filesystem::path forward_scene;          ///< an `ffp` scene, resolved against this scene's folder
-  std::vector<std::string> forward_overrides;   ///< key=value applied to every model run
-  std::vector<FitParameter> parameters;         ///< name = the scene key
+  std::filesystem::path forward_scene;         ///< an `ffp` scene, resolved against this scene's folder
+  std::vector<std::string> forward_overrides;  ///< key=value applied to every model run
+  std::vector<FitParameter> parameters;        ///< name = the scene key
   std::optional<RecordScene> record;
   /// The record's deceleration against depth at `profile_points` depths over
   /// its loading branch; residual weight·(d_model − d_record)/scale_g/√points.

@@ -17,11 +17,11 @@
 namespace ffp {
 
 struct RunContext {
-  std::filesystem::path out_dir;     ///< temporary directory to write into
-  std::filesystem::path scene_dir;   ///< folder of the scene file (relative paths in scenes start here)
+  std::filesystem::path out_dir;    ///< temporary directory to write into
+  std::filesystem::path scene_dir;  ///< folder of the scene file (relative paths in scenes start here)
   bool show_progress = true;
-  json summary = json::object();     ///< the figures the job reports
-  long steps = 0;                    ///< increments or time steps taken
+  json summary = json::object();  ///< the figures the job reports
+  long steps = 0;                 ///< increments or time steps taken
   /// Runs a job may start as `ffp run` processes of its own (an inverse fit's model runs):
   /// at most this many at once (0: one per core), on this machine or through Slurm.
   int jobs = 0;

@@ -10,11 +10,14 @@ const std::vector<KindEntry>& registered_kinds() {
       {"point", "single material point along a stress/strain path", &make_point_job},
       {"mpm", "axisymmetric MPM verification run (bodies, boundaries, gravity)", &make_mpm_job},
       {"integration_error", "error against run time of the constitutive integration", &make_integration_error_job},
-      {"triaxial", "drained triaxial element test: q, ε_v and force–displacement (dissipated work)", &make_triaxial_job},
-      {"calibration", "fit of the SSMC softening factor η to a lab triaxial curve (dissipated work)", &make_calibration_job},
+      {"triaxial", "drained triaxial element test: q, ε_v and force–displacement (dissipated work)",
+       &make_triaxial_job},
+      {"calibration", "fit of the SSMC softening factor η to a lab triaxial curve (dissipated work)",
+       &make_calibration_job},
       {"ffp", "free-fall penetrometer impact on sand: axisymmetric MPM, rigid or elastic body, contact", &make_ffp_job},
       {"cpt", "the FFP pushed at a constant velocity: quasi-static reaction profile F_0(z)", &make_cpt_job},
-      {"record", "a measured FFP drop interpreted: penetration, velocity, q_dyn and q_sbc against depth", &make_record_job},
+      {"record", "a measured FFP drop interpreted: penetration, velocity, q_dyn and q_sbc against depth",
+       &make_record_job},
       {"inverse", "soil parameters of an ffp scene fitted to a record by Ceres over MPM runs", &make_inverse_job},
   };
   return kinds;

@@ -15,8 +15,8 @@ namespace {
 /// the executable's .preinit_array, which runs before any shared library's
 /// initialiser. A user's own OMP_WAIT_POLICY is kept.
 void wait_passively_by_default(int, char**, char**) { ::setenv("OMP_WAIT_POLICY", "PASSIVE", 0); }
-[[gnu::section(".preinit_array"), gnu::used]] void (*const k_wait_passively)(int, char**, char**) =
-    &wait_passively_by_default;
+[[gnu::section(".preinit_array"), gnu::used]] void (*const k_wait_passively)(int, char**,
+                                                                             char**) = &wait_passively_by_default;
 
 }  // namespace
 

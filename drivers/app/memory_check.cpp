@@ -29,8 +29,7 @@ void require_fits_in_memory(const mpm::ModelSize& size, const std::string& key, 
 void describe_memory(std::ostream& out, const mpm::ModelSize& size) {
   const MemoryLimit limit = usable_memory();
   out << "memory: " << (size.particles_at_least ? "at least " : "about ") << format_bytes(size.bytes()) << " ("
-      << counts(size) << "); usable " << format_bytes(limit.bytes) << " ("
-      << limit.source << ")\n";
+      << counts(size) << "); usable " << format_bytes(limit.bytes) << " (" << limit.source << ")\n";
 }
 
 }  // namespace ffp

@@ -101,9 +101,11 @@ class MpmJob : public Job {
     out << "stages: " << s.stages.describe() << "\n";
     out << "CFL time step limit h_min/(c_p + |v|max): " << format_seconds(s.dt_limit_s) << "\n";
     out << "time step: " << format_seconds(s.dt_s)
-        << (s.settings.fixed_dt_s ? " (fixed)" : " (Courant " + std::to_string(s.settings.courant) + ", recomputed every step)")
+        << (s.settings.fixed_dt_s ? " (fixed)"
+                                  : " (Courant " + std::to_string(s.settings.courant) + ", recomputed every step)")
         << "\n";
-    out << "steps to end_time_s (at this step): about " << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s)) << "\n";
+    out << "steps to end_time_s (at this step): about " << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s))
+        << "\n";
     if (s.settings.transfer == mpm::Transfer::usl)
       out << "note: USL takes the strain rate from v_i^{n+1}, which nodes of small mass at cell crossings can blow up\n"
              "      (measured: a bouncing block went unstable at Courant 0.5); MUSL is the robust choice\n";
@@ -141,7 +143,8 @@ std::vector<std::string> MpmJob::columns() const {
   std::vector<std::string> c = {"time_s"};
   c.insert(c.end(), scene_.output.history.begin(), scene_.output.history.end());
   for (const MpmProbe& p : scene_.output.probes)
-    for (const char* q : {"r_m", "z_m", "v_r_m_s", "v_z_m_s", "sigma_rr_kPa", "sigma_zz_kPa", "sigma_tt_kPa", "sigma_rz_kPa"})
+    for (const char* q :
+         {"r_m", "z_m", "v_r_m_s", "v_z_m_s", "sigma_rr_kPa", "sigma_zz_kPa", "sigma_tt_kPa", "sigma_rz_kPa"})
       c.push_back(p.name + "_" + q);
   return c;
 }

@@ -25,10 +25,10 @@ struct MpmOutputTimes {
 };
 
 struct MpmRunCallbacks {
-  std::function<void()> record_row;     ///< append one history row for the simulation's current state
-  std::function<void()> write_fields;   ///< write the particle fields of the current state
-  std::function<void()> after_step;     ///< optional: after every step (running extremes)
-  std::function<void()> after_step_row; ///< optional: after every history row a step produced (not the initial one)
+  std::function<void()> record_row;      ///< append one history row for the simulation's current state
+  std::function<void()> write_fields;    ///< write the particle fields of the current state
+  std::function<void()> after_step;      ///< optional: after every step (running extremes)
+  std::function<void()> after_step_row;  ///< optional: after every history row a step produced (not the initial one)
   /// Optional: a scene that repeats the failing step, saved by the program beside the error.
   std::function<json(const mpm::StepFailure&)> reproducer;
 };

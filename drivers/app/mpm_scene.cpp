@@ -20,23 +20,28 @@ std::vector<double> read_axis(SceneReader& mesh, const std::string& axis, double
   const std::string list_key = axis + "_nodes_m";
   if (mesh.has(list_key)) {
     for (const std::string& k : {axis + "_min_m", axis + "_max_m", "cell_" + axis + "_m"})
-      if (mesh.has(k)) mesh.fail(k, "give either " + list_key + " or " + axis + "_min_m/" + axis + "_max_m/cell_" + axis + "_m, not both");
-    const Range range = axis == "r" ? Range::closed(0.0, kMaxLength_m, "m") : Range::closed(-kMaxLength_m, kMaxLength_m, "m");
+      if (mesh.has(k))
+        mesh.fail(
+            k, "give either " + list_key + " or " + axis + "_min_m/" + axis + "_max_m/cell_" + axis + "_m, not both");
+    const Range range =
+        axis == "r" ? Range::closed(0.0, kMaxLength_m, "m") : Range::closed(-kMaxLength_m, kMaxLength_m, "m");
     std::vector<double> nodes = mesh.numbers(list_key, range, 3, kMaxNodesPerAxis);
     for (std::size_t i = 1; i < nodes.size(); ++i)
       if (!(nodes[i] > nodes[i - 1]))
         mesh.fail(list_key + "[" + std::to_string(i) + "]", "node coordinates must increase strictly");
     return nodes;
   }
-  const double lo = axis == "r" ? mesh.number(axis + "_min_m", Range::closed(0.0, kMaxLength_m, "m"), default_min)
-                                : mesh.number(axis + "_min_m", Range::closed(-kMaxLength_m, kMaxLength_m, "m"), default_min);
+  const double lo = axis == "r"
+                        ? mesh.number(axis + "_min_m", Range::closed(0.0, kMaxLength_m, "m"), default_min)
+                        : mesh.number(axis + "_min_m", Range::closed(-kMaxLength_m, kMaxLength_m, "m"), default_min);
   const double hi = mesh.number(axis + "_max_m", Range::closed(-kMaxLength_m, kMaxLength_m, "m"));
   if (!(hi > lo)) mesh.fail(axis + "_max_m", "must be greater than " + axis + "_min_m");
   const double cell = mesh.number("cell_" + axis + "_m", Range::positive(kMaxLength_m, "m"));
   const double count = (hi - lo) / cell;
   const long n = std::lround(count);
   if (n < 2 || std::abs(count - static_cast<double>(n)) > 1e-6 * count)
-    mesh.fail("cell_" + axis + "_m", "must cut [" + axis + "_min_m, " + axis + "_max_m] into a whole number (≥ 2) of cells");
+    mesh.fail("cell_" + axis + "_m",
+              "must cut [" + axis + "_min_m, " + axis + "_max_m] into a whole number (≥ 2) of cells");
   if (static_cast<std::size_t>(n) >= kMaxNodesPerAxis) mesh.fail("cell_" + axis + "_m", "gives too many cells");
   std::vector<double> nodes;
   for (long i = 0; i <= n; ++i) nodes.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n));
@@ -67,18 +72,19 @@ mpm::Region read_region(SceneReader& region, const std::vector<double>& r, const
   b.z_max_m = region.number("z_max_m", zz);
   if (!(b.r_max_m > b.r_min_m)) region.fail("r_max_m", "must be greater than r_min_m");
   if (!(b.z_max_m > b.z_min_m)) region.fail("z_max_m", "must be greater than z_min_m");
-  region.finish("a box region (r_min_m, r_max_m, z_min_m, z_max_m) or a sphere on the axis (sphere_center_z_m, sphere_radius_m)");
+  region.finish(
+      "a box region (r_min_m, r_max_m, z_min_m, z_max_m) or a sphere on the axis (sphere_center_z_m, sphere_radius_m)");
   return b;
 }
 
 }  // namespace
 
 std::vector<std::string> mpm_history_quantities(const std::vector<std::string>& body_names) {
-  static const std::vector<std::string> global = {"kinetic_energy_J", "strain_energy_J", "gravity_energy_J",
-                                                  "total_energy_J",   "momentum_z_N_s",  "mass_kg",
-                                                  "max_speed_m_s",    "dt_s"};
+  static const std::vector<std::string> global = {
+      "kinetic_energy_J", "strain_energy_J", "gravity_energy_J", "total_energy_J",
+      "momentum_z_N_s",   "mass_kg",         "max_speed_m_s",    "dt_s"};
   static const std::vector<std::string> per_body = {"kinetic_energy_J", "strain_energy_J", "momentum_z_N_s",
-                                                    "mass_kg", "mean_z_m", "mean_v_z_m_s"};
+                                                    "mass_kg",          "mean_z_m",        "mean_v_z_m_s"};
   std::vector<std::string> out = global;
   for (const std::string& b : body_names)
     for (const std::string& q : per_body) out.push_back(b + "_" + q);
@@ -122,7 +128,8 @@ MpmScene read_mpm_scene(SceneReader& scene) {
       b.fail("particles_per_cell", "must be two whole numbers [n_r, n_z]");
     body.particles_per_cell_r = static_cast<int>(ppc[0]);
     body.particles_per_cell_z = static_cast<int>(ppc[1]);
-    const auto velocity = b.optional_numbers("initial_velocity_m_s", Range::closed(-kMaxSpeed_m_s, kMaxSpeed_m_s, "m/s"), 2, 2);
+    const auto velocity =
+        b.optional_numbers("initial_velocity_m_s", Range::closed(-kMaxSpeed_m_s, kMaxSpeed_m_s, "m/s"), 2, 2);
     if (velocity) {
       body.initial_velocity_r_m_s = (*velocity)[0];
       body.initial_velocity_z_m_s = (*velocity)[1];
@@ -154,7 +161,8 @@ MpmScene read_mpm_scene(SceneReader& scene) {
   for (SceneReader& l : loads) {
     mpm::SurfacePressure p;
     p.side = l.choice("side", mpm::kSideNames);
-    if (p.side == mpm::Side::inner && axis) l.fail("side", "the inner side is the symmetry axis: it carries no pressure");
+    if (p.side == mpm::Side::inner && axis)
+      l.fail("side", "the inner side is the symmetry axis: it carries no pressure");
     const double pressure = 1e3 * l.number("pressure_kPa", Range::closed(-1e9, 1e9, "kPa"));
     const double ramp = l.number("ramp_time_s", Range::non_negative(kMaxTime_s, "s"), 0.0);
     p.z_min_m = l.number("z_min_m", Range::closed(model.z_nodes_m.front(), model.z_nodes_m.back(), "m"));
@@ -196,8 +204,8 @@ MpmScene read_mpm_scene(SceneReader& scene) {
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
         const std::string guess = nearest(name, allowed);
-        output.fail(key, "'" + name + "' is not a history quantity" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
-                             "; allowed: " + list);
+        output.fail(key, "'" + name + "' is not a history quantity" +
+                             (guess.empty() ? "" : " (did you mean '" + guess + "'?)") + "; allowed: " + list);
       }
       o.history.push_back(name);
     }

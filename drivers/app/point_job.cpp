@@ -26,7 +26,9 @@ constexpr int kAxial = 1;  // component 22: z in axisymmetry
 class PointJob : public Job {
  public:
   explicit PointJob(PointScene scene)
-      : name_(std::move(scene.name)), material_(std::move(scene.material)), config_(std::move(scene.config)),
+      : name_(std::move(scene.name)),
+        material_(std::move(scene.material)),
+        config_(std::move(scene.config)),
         path_type_(std::move(scene.path_type)) {}
 
   void describe(std::ostream& out) const override {
@@ -68,11 +70,10 @@ class PointJob : public Job {
       control.push_back(strain ? "strain" : "stress");
       target.push_back(strain ? -f.prescribed_strain_increment[i] : -1e-3 * f.target_stress[i]);
     }
-    scene["path"] = {{"type", "general"},
-                     {"segments", json::array({{{"control", control},
-                                                {"target", target},
-                                                {"increments", 1},
-                                                {"duration_s", f.dt_s}}})}};
+    scene["path"] = {
+        {"type", "general"},
+        {"segments",
+         json::array({{{"control", control}, {"target", target}, {"increments", 1}, {"duration_s", f.dt_s}}})}};
     scene["newton"] = {{"max_iterations", config_.newton.max_iterations},
                        {"relative_tolerance", config_.newton.relative_tolerance}};
     return scene;
@@ -80,7 +81,7 @@ class PointJob : public Job {
 
   void write_history(const PointHistory& history, RunContext& context) const {
     const std::span<const StateOutput> outputs = state_outputs(config_.law);
-    std::vector<std::string> columns = {"step", "time_s", "axial_strain", "volumetric_strain", "shear_strain_12",
+    std::vector<std::string> columns = {"step",  "time_s", "axial_strain", "volumetric_strain", "shear_strain_12",
                                         "p_kPa", "q_kPa"};
     for (const char* c : kPointComponents) columns.push_back(std::string("stress_") + c + "_kPa");
     for (const char* c : kPointComponents) columns.push_back(std::string("strain_") + c);
@@ -95,8 +96,9 @@ class PointJob : public Job {
       const double q_kPa = 1e-3 * deviatoric_stress(r.stress);
       const double axial_strain = -r.strain[kAxial];
       const double volumetric_strain = -trace(r.strain);
-      std::vector<double> row = {static_cast<double>(r.step), r.time_s, axial_strain, volumetric_strain,
-                                 2.0 * r.strain[3], 1e-3 * mean_pressure(r.stress), q_kPa};
+      std::vector<double> row = {
+          static_cast<double>(r.step),    r.time_s, axial_strain, volumetric_strain, 2.0 * r.strain[3],
+          1e-3 * mean_pressure(r.stress), q_kPa};
       for (int i = 0; i < 6; ++i) row.push_back(-1e-3 * r.stress[i]);
       for (int i = 0; i < 6; ++i) row.push_back(-r.strain[i]);
       row.push_back(static_cast<double>(r.region));
@@ -137,18 +139,20 @@ class PointJob : public Job {
     s["increments"] = history.increments;
     s["max_newton_iterations"] = history.max_newton_iterations;
     if (has_state_output(config_.law, StateOutput::plastic_deviatoric_strain))
-      s["final_plastic_deviatoric_strain"] = state_output(config_.law, last.state, mean_pressure(last.stress),
-                                                          StateOutput::plastic_deviatoric_strain);
+      s["final_plastic_deviatoric_strain"] =
+          state_output(config_.law, last.state, mean_pressure(last.stress), StateOutput::plastic_deviatoric_strain);
 
     const fs::path plots = context.out_dir / "plots";
     fs::create_directories(plots);
     const bool shear_path = path_type_ == "simple_shear";
     const std::vector<double>& x = shear_path ? shear : axial;
     const std::string x_label = shear_path ? "shear strain γ_12" : "axial strain ε_a";
-    Plot strength_plot{name_ + ": " + (shear_path ? "shear stress" : "deviatoric stress"), x_label,
-                       shear_path ? "τ_12 (kPa)" : "q (kPa)", {{x, shear_path ? shear_stress : q, material_.model}}};
-    Plot volume_plot{name_ + ": volumetric strain (compression positive)", x_label, "ε_v",
-                     {{x, volumetric, material_.model}}};
+    Plot strength_plot{name_ + ": " + (shear_path ? "shear stress" : "deviatoric stress"),
+                       x_label,
+                       shear_path ? "τ_12 (kPa)" : "q (kPa)",
+                       {{x, shear_path ? shear_stress : q, material_.model}}};
+    Plot volume_plot{
+        name_ + ": volumetric strain (compression positive)", x_label, "ε_v", {{x, volumetric, material_.model}}};
     write_png(strength_plot, plots / (shear_path ? "shear_stress_shear_strain.png" : "q_axial_strain.png"));
     write_png(volume_plot,
               plots / (shear_path ? "volumetric_strain_shear_strain.png" : "volumetric_strain_axial_strain.png"));

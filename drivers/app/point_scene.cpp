@@ -112,8 +112,8 @@ std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir
     PathSegment segment;
     segment.control = control;
     for (int i = 0; i < 6; ++i)
-      segment.target[i] = control[i] == Control::strain ? -((*columns[i])[row] - (*columns[i])[0])
-                                                        : -1e3 * (*columns[i])[row];
+      segment.target[i] =
+          control[i] == Control::strain ? -((*columns[i])[row] - (*columns[i])[0]) : -1e3 * (*columns[i])[row];
     segment.increments = per_row;
     segment.duration_s = time[row] - time[row - 1];
     out.push_back(segment);
@@ -123,8 +123,8 @@ std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir
 
 PathSpec read_path(SceneReader& path, const fs::path& scene_dir) {
   PathSpec spec;
-  spec.type = path.choice("type", {"isotropic", "oedometric", "triaxial_compression", "triaxial_extension",
-                                   "simple_shear", "general"});
+  spec.type = path.choice(
+      "type", {"isotropic", "oedometric", "triaxial_compression", "triaxial_extension", "simple_shear", "general"});
   const std::string context = "a " + spec.type + " path";
   if (spec.type == "general") {
     if (path.has("segments") == path.has("table_csv"))
@@ -210,11 +210,12 @@ PointScene read_point_scene(SceneReader& scene, const fs::path& scene_dir) {
   if (scene.has("initial_stress_kPa") && scene.has("initial_pressure_kPa"))
     scene.fail("initial_pressure_kPa", "give either initial_stress_kPa or initial_pressure_kPa, not both");
   if (scene.has("initial_stress_kPa")) {
-    config.initial_stress =
-        stress_from_kPa(scene.numbers("initial_stress_kPa", Range::closed(-kMaxStress_kPa, kMaxStress_kPa, "kPa"), 6, 6));
+    config.initial_stress = stress_from_kPa(
+        scene.numbers("initial_stress_kPa", Range::closed(-kMaxStress_kPa, kMaxStress_kPa, "kPa"), 6, 6));
   } else {
     const double natural = path.natural_initial_stress ? -1e-3 * (*path.natural_initial_stress)[0] : 0.0;
-    const double p = scene.number("initial_pressure_kPa", Range::closed(-kMaxStress_kPa, kMaxStress_kPa, "kPa"), natural);
+    const double p =
+        scene.number("initial_pressure_kPa", Range::closed(-kMaxStress_kPa, kMaxStress_kPa, "kPa"), natural);
     config.initial_stress = stress_from_kPa({p, p, p, 0, 0, 0});
   }
   if (path.table_start) check_table_start(*path.table_start, config.initial_stress);

@@ -30,8 +30,9 @@ inline constexpr std::array<const char*, 6> kPointComponents = {"11", "22", "33"
 struct PointScene {
   std::string name;
   MaterialSpec material;
-  PointConfig config;     ///< SI, tension positive: what integrate_point takes
-  std::string path_type;  ///< isotropic | oedometric | triaxial_compression | triaxial_extension | simple_shear | general
+  PointConfig config;  ///< SI, tension positive: what integrate_point takes
+  std::string
+      path_type;  ///< isotropic | oedometric | triaxial_compression | triaxial_extension | simple_shear | general
 };
 
 /// Reads every key after kind and finish()es the scene; relative table_csv

@@ -44,7 +44,8 @@ class RecordJob : public Job {
     std::vector<std::pair<std::string, std::vector<double>>> extra;
     if (samples_.pore_pressure_kPa) {
       const auto& u = *samples_.pore_pressure_kPa;
-      extra.push_back({"pore_pressure_kPa", std::vector<double>(u.begin() + static_cast<long>(record.impact_index) + 1, u.end())});
+      extra.push_back(
+          {"pore_pressure_kPa", std::vector<double>(u.begin() + static_cast<long>(record.impact_index) + 1, u.end())});
     }
     record_table(record, scene_.settings, extra).write(context.out_dir / "history.csv");
     context.summary = record_summary(record, scene_.settings);

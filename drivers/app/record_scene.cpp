@@ -19,11 +19,13 @@ RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
   out.record_csv = (fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file).lexically_normal();
   std::error_code error;
   if (!fs::is_regular_file(out.record_csv, error))
-    scene.fail("record_csv", "'" + out.record_csv.string() + "' is not a file (paths are relative to the scene's folder)");
+    scene.fail("record_csv",
+               "'" + out.record_csv.string() + "' is not a file (paths are relative to the scene's folder)");
   if (scene.has("sensor_range_g") && scene.has("sensor_range_m_s2"))
     scene.fail("sensor_range_m_s2", "give the full scale once, in the unit of the record's channel");
   if (scene.has("sensor_range_g")) out.sensor_range = scene.number("sensor_range_g", Range::positive(1e5, "g"));
-  if (scene.has("sensor_range_m_s2")) out.sensor_range = scene.number("sensor_range_m_s2", Range::positive(1e6, "m/s²"));
+  if (scene.has("sensor_range_m_s2"))
+    out.sensor_range = scene.number("sensor_range_m_s2", Range::positive(1e6, "m/s²"));
 
   SceneReader f = scene.object("ffp", true);
   s.mass_kg = f.number("mass_kg", Range::positive(1e5, "kg"));
@@ -43,8 +45,8 @@ RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
   }
   f.finish("the ffp of a record (mass_kg, tip, cone_apex_angle_deg, base_radius_m, volume_m3 for a water drop)");
 
-  s.fluid_density_kg_m3 =
-      scene.number("fluid_density_kg_m3", Range::non_negative(2e4, "kg/m³"), s.medium == DropMedium::water ? 1020.0 : 1.2);
+  s.fluid_density_kg_m3 = scene.number("fluid_density_kg_m3", Range::non_negative(2e4, "kg/m³"),
+                                       s.medium == DropMedium::water ? 1020.0 : 1.2);
   s.drag_coefficient = scene.number("drag_coefficient", Range::non_negative(10.0), 0.0);
   s.gravity_m_s2 = scene.number("gravity_m_s2", Range::positive(100.0, "m/s²"), 9.81);
   if (scene.has("impact_velocity_m_s"))
@@ -82,8 +84,9 @@ RecordSamples load_record(const RecordScene& scene) {
   if (!data.has("time_s")) throw SceneError(name + ": the record needs a time_s column");
   const bool net = data.has("deceleration_g"), sensor = data.has("acceleration_m_s2");
   if (net == sensor)
-    throw SceneError(name + ": the record needs exactly one of the columns deceleration_g (net, + while slowing) or "
-                            "acceleration_m_s2 (the accelerometer's reading, sky positive)");
+    throw SceneError(name +
+                     ": the record needs exactly one of the columns deceleration_g (net, + while slowing) or "
+                     "acceleration_m_s2 (the accelerometer's reading, sky positive)");
   out.channel = net ? "deceleration_g" : "acceleration_m_s2";
   out.time_s = data.column("time_s");
   const std::vector<double>& channel = data.column(out.channel);
@@ -92,7 +95,8 @@ RecordSamples load_record(const RecordScene& scene) {
     if (data.has("pore_pressure_kPa")) {
       out.pore_pressure_kPa = data.column("pore_pressure_kPa");
       // Time only: a pore pressure may hold its value for long, which is no saturation.
-      check_record_channel(out.time_s, *out.pore_pressure_kPa, "pore_pressure_kPa", std::numeric_limits<double>::infinity());
+      check_record_channel(out.time_s, *out.pore_pressure_kPa, "pore_pressure_kPa",
+                           std::numeric_limits<double>::infinity());
     }
   } catch (const RecordError& e) {
     throw SceneError(name + ": " + e.what());

@@ -54,8 +54,8 @@ int command_report(const ReportOptions& options) {
     // calibration specimens), so runs side by side finish the study sooner than
     // one run at a time on two OpenMP threads (the report took 24 against 37 min
     // on a fresh clone here, with the longest runs started first).
-    const int jobs = options.jobs > 0 ? options.jobs
-                                      : static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+    const int jobs =
+        options.jobs > 0 ? options.jobs : static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
     if (!fs::is_directory(scenes)) throw SceneError("--scenes: '" + scenes.string() + "' is not a folder of scenes");
 
     // Refuse a folder of the user's before hours of runs, not after.
@@ -85,12 +85,13 @@ int command_report(const ReportOptions& options) {
     }
     if (!second_round.empty()) {
       std::fprintf(stderr, "report: %zu runs that use the results above\n", second_round.size());
-      const std::vector<RunOutcome> second = run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs, scheduler);
+      const std::vector<RunOutcome> second =
+          run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs, scheduler);
       for (std::size_t k = 0, offset = 0; k < studies.size(); offset += follow_ups[k].size(), ++k) {
         if (follow_ups[k].empty()) continue;
         const auto begin = second.begin() + static_cast<long>(offset);
-        results[k] = results[k].extended(follow_ups[k],
-                                         std::vector<RunOutcome>(begin, begin + static_cast<long>(follow_ups[k].size())));
+        results[k] = results[k].extended(
+            follow_ups[k], std::vector<RunOutcome>(begin, begin + static_cast<long>(follow_ups[k].size())));
       }
     }
 
@@ -118,7 +119,8 @@ int command_report(const ReportOptions& options) {
         if (!mine.ok(i)) ++failures;
         run_rows.push_back({mine.request(i).label, mine.ok(i) ? "ok" : "FAILED: " + mine.outcome(i).error,
                             summary.contains("wall_time_s") ? fixed(summary["wall_time_s"].get<double>(), 2) : "–",
-                            mine.outcome(i).cached ? "cached" : "ran now", mine.outcome(i).out_dir.filename().string()});
+                            mine.outcome(i).cached ? "cached" : "ran now",
+                            mine.outcome(i).out_dir.filename().string()});
       }
       document.heading(2, studies[k].title);
       StudyOutput output{document, directory.path() / "figures", "figures", directory.path() / "tables"};
@@ -130,15 +132,19 @@ int command_report(const ReportOptions& options) {
         throw;
       } catch (const std::exception& e) {
         ++failures;
-        document.paragraph("**This study could not be written** (a run above failed or gave an incomplete "
-                           "summary): " + std::string(e.what()));
+        document.paragraph(
+            "**This study could not be written** (a run above failed or gave an incomplete "
+            "summary): " +
+            std::string(e.what()));
       }
     }
 
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     document.heading(2, "Runs");
-    document.paragraph("Wall time of each run as recorded when it ran (cached runs keep their original time). This "
-                       "report took " + fixed(total, 1) + " s to assemble, including the runs made now.");
+    document.paragraph(
+        "Wall time of each run as recorded when it ran (cached runs keep their original time). This "
+        "report took " +
+        fixed(total, 1) + " s to assemble, including the runs made now.");
     document.table({"run", "status", "wall time [s]", "this time", "folder (in " + cache.string() + ")"}, run_rows);
     write_file_atomically(directory.path() / "report.md", document.str());
     directory.commit("report");

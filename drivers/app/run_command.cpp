@@ -8,17 +8,16 @@
 #include <optional>
 #include <thread>
 
-#include <csignal>
-#include <cstdlib>
 #include <sys/prctl.h>
 #include <unistd.h>
+#include <csignal>
+#include <cstdlib>
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
-
 
 namespace ffp {
 
@@ -45,11 +44,14 @@ LoadedScene load(const RunOptions& a) {
   loaded.scene_dir = fs::path(a.scene_file).parent_path();
   loaded.job = make_job(scene, loaded.scene_dir, loaded.echo);
   const std::string name = loaded.echo.value("name", "");
-  const auto allowed = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'; };
+  const auto allowed = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-';
+  };
   const bool safe = !name.empty() && name.size() <= 100 && std::isalnum(static_cast<unsigned char>(name[0])) &&
                     std::all_of(name.begin(), name.end(), allowed);
   if (!safe)
-    throw SceneError("name: '" + name + "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
+    throw SceneError("name: '" + name +
+                     "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
   return loaded;
 }
 

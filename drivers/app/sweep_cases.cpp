@@ -141,23 +141,36 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
                "set -u\n"
                "cd \"$(dirname \"$0\")\"\n"
                "n=$(printf '%04d' \"$1\")\n"
-               "if [ -e \"runs/case_$n/" + std::string(kOutputManifest) + "\" ]; then echo \"case $n: already finished\"; exit 0; fi\n"
-               "mkdir -p logs\n"
-               "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-" + threads + "}\"\n" +
-               shell_quoted(options.ffp_binary.string()) +
-               " run \"scenes/case_$n.json\" --out \"runs/case_$n\" --quiet 2> \"logs/case_$n.err\"\n"
-               "status=$?\n"
-               "echo \"$status\" > \"logs/case_$n.exit\"\n"
-               "exit \"$status\"\n");
+               "if [ -e \"runs/case_$n/" +
+                   std::string(kOutputManifest) +
+                   "\" ]; then echo \"case $n: already finished\"; exit 0; fi\n"
+                   "mkdir -p logs\n"
+                   "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-" +
+                   threads + "}\"\n" + shell_quoted(options.ffp_binary.string()) +
+                   " run \"scenes/case_$n.json\" --out \"runs/case_$n\" --quiet 2> \"logs/case_$n.err\"\n"
+                   "status=$?\n"
+                   "echo \"$status\" > \"logs/case_$n.exit\"\n"
+                   "exit \"$status\"\n");
   write_script(dir / "slurm.sbatch",
                "#!/usr/bin/env bash\n"
-               "#SBATCH --job-name=" + options.job_name + "\n"
-               "#SBATCH --array=0-" + last + "\n"
-               "#SBATCH --cpus-per-task=" + threads + "\n"
-               "#SBATCH --output=" + (dir / "logs" / "slurm-%A_%a.out").string() + "\n"
-               "# " + n + " cases, one per array task: sbatch slurm.sbatch (from any folder), then ffp collect " +
-               dir.string() + "\n"
-               "exec bash " + shell_quoted((dir / "run_case.sh").string()) + " \"$SLURM_ARRAY_TASK_ID\"\n");
+               "#SBATCH --job-name=" +
+                   options.job_name +
+                   "\n"
+                   "#SBATCH --array=0-" +
+                   last +
+                   "\n"
+                   "#SBATCH --cpus-per-task=" +
+                   threads +
+                   "\n"
+                   "#SBATCH --output=" +
+                   (dir / "logs" / "slurm-%A_%a.out").string() +
+                   "\n"
+                   "# " +
+                   n + " cases, one per array task: sbatch slurm.sbatch (from any folder), then ffp collect " +
+                   dir.string() +
+                   "\n"
+                   "exec bash " +
+                   shell_quoted((dir / "run_case.sh").string()) + " \"$SLURM_ARRAY_TASK_ID\"\n");
   write_script(dir / "parallel.sh",
                "#!/usr/bin/env bash\n"
                "# GNU parallel on one machine or inside one allocation: bash parallel.sh [JOBS]. The joblog\n"
@@ -165,8 +178,9 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
                "set -eu\n"
                "cd \"$(dirname \"$0\")\"\n"
                "mkdir -p logs\n"
-               "parallel --jobs \"${1:-" + std::to_string(options.parallel_jobs) +
-               "}\" --joblog logs/parallel.joblog --resume bash run_case.sh {} ::: $(seq 0 " + last + ")\n");
+               "parallel --jobs \"${1:-" +
+                   std::to_string(options.parallel_jobs) +
+                   "}\" --joblog logs/parallel.joblog --resume bash run_case.sh {} ::: $(seq 0 " + last + ")\n");
 }
 
 std::vector<CaseResult> collect_sweep(const fs::path& dir, std::vector<std::string>& keys) {
@@ -174,7 +188,8 @@ std::vector<CaseResult> collect_sweep(const fs::path& dir, std::vector<std::stri
   if (!in) throw SceneError(dir.string() + ": no cases.tsv (make one with ffp sweep … --emit " + dir.string() + ")");
   std::string line;
   std::getline(in, line);
-  if (line != "case\toverrides\tscene\tout_dir") throw SceneError((dir / "cases.tsv").string() + ": not a sweep's case list");
+  if (line != "case\toverrides\tscene\tout_dir")
+    throw SceneError((dir / "cases.tsv").string() + ": not a sweep's case list");
   std::vector<CaseResult> results;
   keys.clear();
   while (std::getline(in, line)) {

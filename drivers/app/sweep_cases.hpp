@@ -31,8 +31,8 @@ std::vector<SweepCase> expand_sweep(const std::filesystem::path& scene_file, con
 struct CaseResult {
   std::vector<std::string> overrides;
   std::filesystem::path out_dir;
-  int exit_code = -1;   ///< -1: missing (never ran, or still running)
-  std::string error;    ///< last stderr line of a failed case
+  int exit_code = -1;  ///< -1: missing (never ran, or still running)
+  std::string error;   ///< last stderr line of a failed case
 };
 
 /// sweep.csv: the swept values, exit_code, out_dir, then every scalar figure of the summaries.

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "drivers/app/commands.hpp"
-#include "drivers/app/sweep_cases.hpp"
 #include "drivers/app/job.hpp"
+#include "drivers/app/sweep_cases.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
@@ -58,8 +58,8 @@ int report_collected(const fs::path& dir, const std::vector<std::string>& keys, 
                    cases[i].error.c_str());
     }
   }
-  std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing\n", (dir / "sweep.csv").string().c_str(),
-               cases.size(), cases.size() - missing - failed, failed, missing);
+  std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing\n",
+               (dir / "sweep.csv").string().c_str(), cases.size(), cases.size() - missing - failed, failed, missing);
   return missing == 0 && failed == 0 ? 0 : 1;
 }
 
@@ -115,7 +115,8 @@ int command_sweep(const SweepOptions& options) {
       options.parallel_jobs = std::max(jobs, 1);
       options.job_name = "ffp-" + name;
       emit_sweep(dir, cases, options);
-      std::fprintf(stderr, "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
+      std::fprintf(stderr,
+                   "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
                    cases.size(), dir.string().c_str(), dir.string().c_str());
       return slurm ? run_on_slurm(dir, cases.size()) : 0;
     }

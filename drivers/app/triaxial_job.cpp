@@ -34,7 +34,9 @@ std::vector<StateOutput> state_columns(const MaterialLaw& law) {
 class TriaxialJob : public Job {
  public:
   explicit TriaxialJob(TriaxialScene scene)
-      : name_(std::move(scene.name)), material_(std::move(scene.material)), config_(std::move(scene.config)),
+      : name_(std::move(scene.name)),
+        material_(std::move(scene.material)),
+        config_(std::move(scene.config)),
         output_every_(scene.output_every) {}
 
   void describe(std::ostream& out) const override {
@@ -61,18 +63,23 @@ class TriaxialJob : public Job {
  private:
   void write_history(const TriaxialResult& r, RunContext& context) const {
     const std::vector<StateOutput> outputs = state_columns(config_.law);
-    std::vector<std::string> columns = {"step",           "axial_strain",    "volumetric_strain",
-                                        "q_kPa",          "p_kPa",           "axial_displacement_m",
-                                        "axial_force_N",  "dissipated_work_J", "plastic_work_J"};
+    std::vector<std::string> columns = {
+        "step",          "axial_strain",      "volumetric_strain", "q_kPa", "p_kPa", "axial_displacement_m",
+        "axial_force_N", "dissipated_work_J", "plastic_work_J"};
     for (StateOutput o : outputs) columns.push_back(output_column(o));
     CsvTable table(columns);
     const std::size_t n = r.axial_strain.size();
     for (std::size_t i = 0; i < n; ++i) {
       if (i % static_cast<std::size_t>(output_every_) != 0 && i + 1 != n) continue;
       const PointRecord& record = r.history.records[i];
-      std::vector<double> row = {static_cast<double>(record.step), r.axial_strain[i], r.volumetric_strain[i],
-                                 1e-3 * r.deviatoric_stress_Pa[i], 1e-3 * r.mean_stress_Pa[i],
-                                 r.axial_displacement_m[i], r.axial_force_N[i], r.dissipated_work_J[i],
+      std::vector<double> row = {static_cast<double>(record.step),
+                                 r.axial_strain[i],
+                                 r.volumetric_strain[i],
+                                 1e-3 * r.deviatoric_stress_Pa[i],
+                                 1e-3 * r.mean_stress_Pa[i],
+                                 r.axial_displacement_m[i],
+                                 r.axial_force_N[i],
+                                 r.dissipated_work_J[i],
                                  r.plastic_work_J[i]};
       for (StateOutput o : outputs)
         row.push_back(output_value(o, state_output(config_.law, record.state, r.mean_stress_Pa[i], o)));
@@ -127,9 +134,13 @@ class TriaxialJob : public Job {
                   r.plastic_work_J_total);
     const std::vector<Plot> panels = {
         Plot{title + ": deviatoric stress", "axial strain ε_a (%)", "q (kPa)", {{axial_percent, q_kPa, model}}},
-        Plot{title + ": volumetric strain (compression positive)", "axial strain ε_a (%)", "ε_v (%)",
+        Plot{title + ": volumetric strain (compression positive)",
+             "axial strain ε_a (%)",
+             "ε_v (%)",
              {{axial_percent, volumetric_percent, model}}},
-        Plot{title + ": axial force against displacement, " + work, "axial displacement δ (mm)", "F = q·A (N)",
+        Plot{title + ": axial force against displacement, " + work,
+             "axial displacement δ (mm)",
+             "F = q·A (N)",
              {{displacement_mm, force_N, model}}}};
     write_png(panels[0], plots / "q_axial_strain.png");
     write_png(panels[1], plots / "volumetric_strain_axial_strain.png");

@@ -98,8 +98,8 @@ CsvData read_numeric_csv(const std::filesystem::path& file) {
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
       if (cell.empty() || end != cell.c_str() + cell.size())
-        throw SceneError(name + ":" + std::to_string(line_number) + ": column '" + data.columns[c] +
-                         "': '" + cell + "' is not a number");
+        throw SceneError(name + ":" + std::to_string(line_number) + ": column '" + data.columns[c] + "': '" + cell +
+                         "' is not a number");
       if (!std::isfinite(v))
         throw SceneError(name + ":" + std::to_string(line_number) + ": column '" + data.columns[c] +
                          "': must be a finite number, got '" + cell + "'");

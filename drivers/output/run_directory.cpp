@@ -161,7 +161,8 @@ void remove_stale_siblings(const fs::path& target) {
       const std::string prefix = hidden_prefix(target, tag);
       if (!name.starts_with(prefix) || name.size() == prefix.size()) continue;
       const std::string digits = name.substr(prefix.size());
-      if (!std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      if (!std::all_of(digits.begin(), digits.end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
         continue;
       if (digits.size() > 9 || process_alive(std::stol(digits))) continue;
       std::error_code ignored;

@@ -43,8 +43,8 @@ void write_manifest(const std::filesystem::path& folder, const std::string& what
 /// manifest when absent or empty, accepted when it carries one (or is a cache
 /// written before manifests existed: only "<label>-<16 hex>" run folders and
 /// ".<label>.log" files), refused otherwise unless `force`.
-void claim_persistent_folder(const std::filesystem::path& folder, const std::string& option,
-                             const std::string& what, bool force);
+void claim_persistent_folder(const std::filesystem::path& folder, const std::string& option, const std::string& what,
+                             bool force);
 
 /// Removes ".NAME.tmp-PID" and ".NAME.old-PID" siblings of `target` whose
 /// process no longer runs (left by a run that was killed).

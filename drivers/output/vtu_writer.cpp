@@ -52,19 +52,29 @@ std::string escaped(const std::string& name) {
   std::string out;
   for (char c : name) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
 }
 
 void check_size(std::span<const double> a, std::size_t n, const std::string& what) {
-  if (a.size() != n) throw std::invalid_argument("VTU: " + what + " has " + std::to_string(a.size()) +
-                                                 " values for " + std::to_string(n) + " points");
+  if (a.size() != n)
+    throw std::invalid_argument("VTU: " + what + " has " + std::to_string(a.size()) + " values for " +
+                                std::to_string(n) + " points");
 }
 
 std::vector<double> interleave(std::size_t n, std::span<const double> x, std::span<const double> y,
@@ -112,7 +122,8 @@ std::string vtu_text(const VtuPointCloud& cloud) {
   }
   const std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
   out += "<Cells>\n";
-  out += "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">\n" + encoded(connectivity) + "\n</DataArray>\n";
+  out += "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">\n" + encoded(connectivity) +
+         "\n</DataArray>\n";
   out += "<DataArray type=\"Int64\" Name=\"offsets\" format=\"binary\">\n" + encoded(offsets) + "\n</DataArray>\n";
   out += "<DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">\n" + encoded(types) + "\n</DataArray>\n";
   out += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";

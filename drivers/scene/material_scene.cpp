@@ -39,8 +39,9 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
   // φ' = 0 is Tresca, a clay's undrained strength c' = s_u: only with a cohesion, and only for MC
   // (SSMC softens φ' towards φ'_r > 0).
   if (phi_deg == 0.0 && (spec.model != "mohr_coulomb" || cohesion_kPa == 0.0))
-    m.fail("phi_peak_deg", spec.model == "mohr_coulomb" ? "0 (Tresca) needs c_peak_kPa > 0; otherwise 0 < φ' < 90 degrees"
-                                                        : "must be in (0, 90) degrees for ssmc (φ' = 0 with c' > 0 is mohr_coulomb)");
+    m.fail("phi_peak_deg", spec.model == "mohr_coulomb"
+                               ? "0 (Tresca) needs c_peak_kPa > 0; otherwise 0 < φ' < 90 degrees"
+                               : "must be in (0, 90) degrees for ssmc (φ' = 0 with c' > 0 is mohr_coulomb)");
 
   if (spec.model == "mohr_coulomb") {
     MohrCoulombParameters p;
@@ -142,9 +143,12 @@ json initial_state_json(const MaterialState& state) {
 
 std::string output_column(StateOutput output) {
   switch (unit(output)) {
-    case OutputUnit::radian: return std::string(name(output)) + "_deg";
-    case OutputUnit::per_second: return std::string(name(output)) + "_per_s";
-    default: return std::string(name(output));
+    case OutputUnit::radian:
+      return std::string(name(output)) + "_deg";
+    case OutputUnit::per_second:
+      return std::string(name(output)) + "_per_s";
+    default:
+      return std::string(name(output));
   }
 }
 

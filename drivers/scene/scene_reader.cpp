@@ -202,8 +202,9 @@ std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_vie
                                                                  std::size_t min_size, std::size_t max_size) {
   const json* v = find(key);
   if (v == nullptr) return std::nullopt;
-  const std::string shape = "a list of " + std::to_string(min_size) + (min_size == max_size ? "" : " to " + std::to_string(max_size)) +
-                            " numbers, each " + range.describe();
+  const std::string shape = "a list of " + std::to_string(min_size) +
+                            (min_size == max_size ? "" : " to " + std::to_string(max_size)) + " numbers, each " +
+                            range.describe();
   if (!v->is_array()) fail(key, "must be " + shape + ", got " + type_name(*v));
   if (v->size() < min_size || v->size() > max_size)
     fail(key, "has " + std::to_string(v->size()) + " entries: must be " + shape);
@@ -290,8 +291,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t above = row[j];
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      const bool same =
+          std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
       row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
       diagonal = above;
     }
@@ -320,7 +321,8 @@ std::string nearest(std::string_view word, const std::vector<std::string>& candi
 }
 
 json parse_scene_text(const std::string& text, const std::string& source_name) {
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw SceneError(source_name + ": file is empty (expected a JSON scene object)");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw SceneError(source_name + ": file is empty (expected a JSON scene object)");
   try {
     return json::parse(text);
   } catch (const json::parse_error& e) {
@@ -345,10 +347,12 @@ json parse_scene_text(const std::string& text, const std::string& source_name) {
     const std::string what = e.what();
     const auto open = what.find('\'');
     const auto close = what.rfind('\'');
-    const std::string literal = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::string literal =
+        open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
     const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
     if (at == std::string::npos) throw SceneError(source_name + ": a number is out of range: " + what);
-    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    std::size_t line =
+        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
     const std::size_t line_start = text.rfind('\n', at);
     const std::size_t column = at - (line_start == std::string::npos ? 0 : line_start + 1) + 1;
     std::string key = "a value";
@@ -375,15 +379,14 @@ json load_scene_file(const std::string& file_path) {
 
 void apply_override(json& scene, const std::string& assignment) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw SceneError("--set " + assignment + ": expected key.path=value");
+  if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key.path=value");
   const std::string key_path = assignment.substr(0, eq);
   const std::string value_text = assignment.substr(eq + 1);
   json value;
   try {
     value = json::parse(value_text);
   } catch (const json::parse_error&) {
-    value = value_text;  // bare words are strings: --set material.model=ssmc
+    value = value_text;                  // bare words are strings: --set material.model=ssmc
   } catch (const json::out_of_range&) {  // found by fuzzing: 1e400 overflows a double
     throw SceneError("--set " + key_path + ": '" + value_text + "' is beyond the range of a number (±1.8e308)");
   }

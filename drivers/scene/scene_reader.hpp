@@ -74,8 +74,7 @@ class SceneReader {
   std::string text(std::string_view key);
   std::string text(std::string_view key, std::string_view fallback);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed);
-  std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed,
-                     std::string_view fallback);
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed, std::string_view fallback);
   /// One of an enum's names (its EnumNames table); the echo holds the name.
   template <class Enum, std::size_t N>
   Enum choice(std::string_view key, const EnumNames<Enum, N>& names) {
@@ -93,10 +92,9 @@ class SceneReader {
     return choice_among(key, names, std::vector<Enum>(allowed), fallback);
   }
   /// A list of numbers, each in range, with a length in [min_size, max_size].
-  std::vector<double> numbers(std::string_view key, const Range& range, std::size_t min_size,
-                              std::size_t max_size);
-  std::optional<std::vector<double>> optional_numbers(std::string_view key, const Range& range,
-                                                      std::size_t min_size, std::size_t max_size);
+  std::vector<double> numbers(std::string_view key, const Range& range, std::size_t min_size, std::size_t max_size);
+  std::optional<std::vector<double>> optional_numbers(std::string_view key, const Range& range, std::size_t min_size,
+                                                      std::size_t max_size);
 
   /// A nested object; absent objects read as {} when `required` is false.
   SceneReader object(std::string_view key, bool required = false);

@@ -27,12 +27,12 @@ Study calibration_study(const std::filesystem::path& scenes_dir) {
         continue;
       }
       const auto& other = s["other_mode"];
-      rows.push_back({i == 0 ? "D_r = 0 % (E' 1000 kPa, φ'_p 38°)" : "D_r = 15 % (E' 5000 kPa, φ'_p 40°)",
-                      fixed(s["eta"].get<double>(), 2), fixed(s["dissipated_work_lab_J"].get<double>(), 4),
-                      fixed(s["dissipated_work_model_J"].get<double>(), 4),
-                      scientific(s["relative_work_residual"].get<double>()),
-                      std::to_string(s["iterations"].get<int>()) + " / " + fixed(s["calibration_wall_time_s"].get<double>(), 3),
-                      other.is_object() ? fixed(other["eta"].get<double>(), 2) : "–"});
+      rows.push_back(
+          {i == 0 ? "D_r = 0 % (E' 1000 kPa, φ'_p 38°)" : "D_r = 15 % (E' 5000 kPa, φ'_p 40°)",
+           fixed(s["eta"].get<double>(), 2), fixed(s["dissipated_work_lab_J"].get<double>(), 4),
+           fixed(s["dissipated_work_model_J"].get<double>(), 4), scientific(s["relative_work_residual"].get<double>()),
+           std::to_string(s["iterations"].get<int>()) + " / " + fixed(s["calibration_wall_time_s"].get<double>(), 3),
+           other.is_object() ? fixed(other["eta"].get<double>(), 2) : "–"});
     }
     md.table({"lab curve", "η (work)", "W_lab [J]", "W_model [J]", "relative residual", "Ceres iterations / time [s]",
               "η (curve least squares)"},
@@ -48,7 +48,9 @@ Study calibration_study(const std::filesystem::path& scenes_dir) {
     md.paragraph(
         "The paper reports no numerical η for its two curves, only the comparison curves for η = 2.5 and 15 "
         "(its Fig. 3) and η = 8 as 'an intermediate stress-strain response for loose sand' used in sections "
-        "5.4–5.5. Against the range [2.5, 15]: " + range_note + ". W depends weakly on η over 20 % strain "
+        "5.4–5.5. Against the range [2.5, 15]: " +
+        range_note +
+        ". W depends weakly on η over 20 % strain "
         "(the work-against-η plot), so a small error in W_lab moves η a lot: the dissipated-work criterion needs a "
         "well-sampled lab curve (the calibration tests measure this).");
     include_run_figure(results, 0, "plots/fig3_q_axial_strain.png", "fig3_calibration_dr00.png",
@@ -59,11 +61,14 @@ Study calibration_study(const std::filesystem::path& scenes_dir) {
                        "Dissipated work W(η) of the element test against the lab's (D_r = 15 %).", out);
     const auto t = results.summary(2);
     if (!t.empty()) {
-      md.paragraph("The element test with the paper's sand for the FFP studies (E' = 2500 kPa, φ'_p = 39°, "
-                   "φ'_c = 32°, ψ_p = 5°, η = 8): peak q = " + fixed(t["peak_q_kPa"].get<double>(), 3) +
-                   " kPa (MC bound σ3(N_φ − 1) = 5.84 kPa), q at 20 % strain = " + fixed(t["residual_q_kPa"].get<double>(), 3) +
-                   " kPa (still above the critical state σ3(N_φc − 1) = 3.88 kPa, since e^(−8·ε_d^p) ≈ 0.2 there), dissipated work " +
-                   fixed(t["dissipated_work_J"].get<double>(), 4) + " J.");
+      md.paragraph(
+          "The element test with the paper's sand for the FFP studies (E' = 2500 kPa, φ'_p = 39°, "
+          "φ'_c = 32°, ψ_p = 5°, η = 8): peak q = " +
+          fixed(t["peak_q_kPa"].get<double>(), 3) +
+          " kPa (MC bound σ3(N_φ − 1) = 5.84 kPa), q at 20 % strain = " + fixed(t["residual_q_kPa"].get<double>(), 3) +
+          " kPa (still above the critical state σ3(N_φc − 1) = 3.88 kPa, since e^(−8·ε_d^p) ≈ 0.2 there), dissipated "
+          "work " +
+          fixed(t["dissipated_work_J"].get<double>(), 4) + " J.");
     }
   };
   return study;

@@ -38,31 +38,34 @@ Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
     const bool calibrated = results.size() > 3;
     const double cal_peak = calibrated ? figure(results, 3, "peak_deceleration_g") : std::nan("");
     const double cal_depth = calibrated ? figure(results, 3, "final_penetration_m") : std::nan("");
-    md.table({"quantity", "paper / experiment", "ours", "difference"},
-             {{"MC reference: peak deceleration", "≈ 15 g (paper)", fixed(peak, 1) + " g", percent_difference(peak, 15.0)},
-              {"MC reference: time of peak", "≈ 0.03 s (paper, Fig. 7)", fixed(time_of_peak, 3) + " s",
-               percent_difference(time_of_peak, 0.03)},
-              {"MC reference: final penetration", "18–20 cm (paper)", fixed(100 * final_depth, 1) + " cm",
-               percent_difference(100 * final_depth, 19.0) + " vs 19 cm"},
-              {"MC reference: reaction at the end (mean of the last " +
-                   fixed(1000 * figure(results, 0, "final_reaction_window_s"), 0) + " ms of 0.15 s)",
-               "≈ weight 75.6 N (paper, Fig. 7d)", fixed(rest, 1) + " N", percent_difference(rest, 75.6)},
-              {"SSMC φ'_p = 60°, η = 8 (paper 5.5): peak deceleration", "19.4 g (experiment; the paper matches it)",
-               fixed(paper_peak, 1) + " g", percent_difference(paper_peak, 19.4)},
-              {"SSMC φ'_p = 60°, η = 8: final penetration", "≈ 15.2 cm (experiment, derived: see data/experiment)",
-               fixed(100 * paper_depth, 1) + " cm", percent_difference(100 * paper_depth, 15.2)},
-              {"SSMC φ'_p = 60°, calibrated η = " + fixed(eta, 1) + ": peak deceleration", "19.4 g (experiment)",
-               fixed(cal_peak, 1) + " g", percent_difference(cal_peak, 19.4)},
-              {"SSMC φ'_p = 60°, calibrated η: final penetration", "≈ 15.2 cm (experiment, derived)",
-               fixed(100 * cal_depth, 1) + " cm", percent_difference(100 * cal_depth, 15.2)}});
+    md.table(
+        {"quantity", "paper / experiment", "ours", "difference"},
+        {{"MC reference: peak deceleration", "≈ 15 g (paper)", fixed(peak, 1) + " g", percent_difference(peak, 15.0)},
+         {"MC reference: time of peak", "≈ 0.03 s (paper, Fig. 7)", fixed(time_of_peak, 3) + " s",
+          percent_difference(time_of_peak, 0.03)},
+         {"MC reference: final penetration", "18–20 cm (paper)", fixed(100 * final_depth, 1) + " cm",
+          percent_difference(100 * final_depth, 19.0) + " vs 19 cm"},
+         {"MC reference: reaction at the end (mean of the last " +
+              fixed(1000 * figure(results, 0, "final_reaction_window_s"), 0) + " ms of 0.15 s)",
+          "≈ weight 75.6 N (paper, Fig. 7d)", fixed(rest, 1) + " N", percent_difference(rest, 75.6)},
+         {"SSMC φ'_p = 60°, η = 8 (paper 5.5): peak deceleration", "19.4 g (experiment; the paper matches it)",
+          fixed(paper_peak, 1) + " g", percent_difference(paper_peak, 19.4)},
+         {"SSMC φ'_p = 60°, η = 8: final penetration", "≈ 15.2 cm (experiment, derived: see data/experiment)",
+          fixed(100 * paper_depth, 1) + " cm", percent_difference(100 * paper_depth, 15.2)},
+         {"SSMC φ'_p = 60°, calibrated η = " + fixed(eta, 1) + ": peak deceleration", "19.4 g (experiment)",
+          fixed(cal_peak, 1) + " g", percent_difference(cal_peak, 19.4)},
+         {"SSMC φ'_p = 60°, calibrated η: final penetration", "≈ 15.2 cm (experiment, derived)",
+          fixed(100 * cal_depth, 1) + " cm", percent_difference(100 * cal_depth, 15.2)}});
     {
       // The paper's Fig. 7d shows the reaction settling at the weight; ours is that plus the
       // inertia of a body not yet at rest (its momentum still changes over the window).
       const double inertia = figure(results, 0, "final_reaction_inertia_N");
       md.paragraph("The reaction at the end is not the weight alone: at 0.15 s the FFP is still moving (" +
                    fixed(figure(results, 0, "final_velocity_m_s"), 3) + " m/s down, after a rebound of " +
-                   fixed(1000 * figure(results, 0, "rebound_m"), 1) + " mm), and over the window its momentum "
-                   "changes by M Δv: the mean reaction is the weight plus M Δv/Δt = " + fixed(inertia, 1) +
+                   fixed(1000 * figure(results, 0, "rebound_m"), 1) +
+                   " mm), and over the window its momentum "
+                   "changes by M Δv: the mean reaction is the weight plus M Δv/Δt = " +
+                   fixed(inertia, 1) +
                    " N. The miss says the body has not come to rest by 0.15 s (it bounces on the sand), not that the "
                    "sand carries the wrong static load; the FFP left at rest carries its weight within 5 % (tests).");
     }

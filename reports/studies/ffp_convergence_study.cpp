@@ -22,7 +22,8 @@ double impulse_until(const CsvData& h, double t) {
   const auto& time = h.column("time_s");
   const auto& impulse = h.column("impulse_N_s");
   for (std::size_t k = 1; k < time.size(); ++k)
-    if (time[k] >= t) return impulse[k - 1] + (impulse[k] - impulse[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
+    if (time[k] >= t)
+      return impulse[k - 1] + (impulse[k] - impulse[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
   return std::nan("");
 }
 
@@ -46,7 +47,8 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     const std::string mesh = "mesh.min_cell_m=" + fixed(h, 4);
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "pure FLIP, " + fixed(100 * h, 2) + " cm",
                                    {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}));
-    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "tip half a cell off, " + fixed(100 * h, 2) + " cm",
+    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json",
+                                   "tip half a cell off, " + fixed(100 * h, 2) + " cm",
                                    {mesh, "mesh.tip_offset_cells=0.5", "output.field_times_s=[]"}));
   }
   study.write = [](const StudyResults& results, StudyOutput& out) {
@@ -69,7 +71,8 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     const Extrapolation depth_ref = richardson(depth[n - 3], depth[n - 2], depth[n - 1]);
     const Extrapolation impulse_ref = richardson(impulse[n - 3], impulse[n - 2], impulse[n - 1]);
     std::vector<std::vector<std::string>> rows;
-    Series peak_error{{}, {}, "peak deceleration", "linespoints"}, depth_error{{}, {}, "final penetration", "linespoints"};
+    Series peak_error{{}, {}, "peak deceleration", "linespoints"},
+        depth_error{{}, {}, "final penetration", "linespoints"};
     for (std::size_t i = 0; i < n; ++i) {
       const double e_peak = std::abs(peak[i] - peak_ref.value) / std::abs(peak_ref.value);
       const double e_depth = std::abs(depth[i] - depth_ref.value) / std::abs(depth_ref.value);
@@ -119,8 +122,9 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       const double ke_flip = last(results.history(flip), "soil_kinetic_energy_J");
       const double z_offset = figure(results, offset, "final_penetration_m");
       controls.push_back({fixed(100 * kMinCells_m[l], 2), fixed(100 * depth[l], 2),
-                          fixed(100 * figure(results, flip, "final_penetration_m"), 2), scientific(ke), scientific(ke_flip),
-                          fixed(100 * z_offset, 2), fixed(100 * (z_offset - depth[l]) / depth[l], 1)});
+                          fixed(100 * figure(results, flip, "final_penetration_m"), 2), scientific(ke),
+                          scientific(ke_flip), fixed(100 * z_offset, 2),
+                          fixed(100 * (z_offset - depth[l]) / depth[l], 1)});
     }
     md.table({"min cell [cm]", "final penetration [cm]", "pure FLIP [cm]", "soil KE at 0.15 s [J]", "pure FLIP [J]",
               "tip half a cell off [cm]", "staircase bias [%]"},
@@ -133,8 +137,14 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     md.paragraph(describe("2 ms peak deceleration", peak_ref, 1.0, "g") + "; " +
                  describe("final penetration", depth_ref, 100.0, "cm") + "; " +
                  describe("impulse over 0–40 ms", impulse_ref, 1.0, "N s") + ".");
-    Plot p{"Error against wall time (2 cores)", "wall time of the run (s)", "relative error", {peak_error, depth_error},
-           true, true, false, "top right"};
+    Plot p{"Error against wall time (2 cores)",
+           "wall time of the run (s)",
+           "relative error",
+           {peak_error, depth_error},
+           true,
+           true,
+           false,
+           "top right"};
     if (write_png(p, out.figures_dir / "convergence_error_vs_wall_time.png"))
       md.figure(out.figures_relative + "/convergence_error_vs_wall_time.png",
                 "Relative error of peak deceleration and final penetration against wall time, one point per mesh.");

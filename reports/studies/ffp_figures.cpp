@@ -45,8 +45,8 @@ void ffp_depth_profiles_figure(const StudyResults& results, const std::vector<La
                                const std::string& title, const std::string& png_name, StudyOutput& out) {
   Plot depth{title + ": penetration", "time (s)", "penetration (cm)", {}, false, false, true, "bottom right"};
   Plot velocity{"velocity profile", "penetration (cm)", "velocity (m/s)", {}, false, false, false, "top right"};
-  Plot deceleration{"deceleration profile", "penetration (cm)", "deceleration (g)", {}, false, false, false,
-                    "top left"};
+  Plot deceleration{
+      "deceleration profile", "penetration (cm)", "deceleration (g)", {}, false, false, false, "top left"};
   for (const auto& r : runs) {
     const CsvData h = results.history(r.index);
     Series d = column_series(h, "time_s", "penetration_m", r.label, 100.0);
@@ -59,8 +59,9 @@ void ffp_depth_profiles_figure(const StudyResults& results, const std::vector<La
     deceleration.series.push_back(a);
   }
   add_figure({depth, velocity, deceleration}, png_name,
-             title + " (penetration against time; velocity and deceleration against penetration, as the paper's "
-                     "Figs. 8, 10–12).",
+             title +
+                 " (penetration against time; velocity and deceleration against penetration, as the paper's "
+                 "Figs. 8, 10–12).",
              out);
 }
 
@@ -69,8 +70,8 @@ void ffp_time_histories_figure(const StudyResults& results, const std::vector<La
   Plot depth{title + ": penetration", "time (s)", "penetration (cm)", {}, false, false, true, "bottom right"};
   Plot velocity{"velocity", "time (s)", "velocity (m/s)", {}, false, false, false, "top right"};
   Plot deceleration{"deceleration", "time (s)", "deceleration (g)", {}, false, false, false, "top right"};
-  Plot reaction{"reaction of the soil on the penetrometer", "time (s)", "reaction (kN)", {}, false, false, false,
-                "top right"};
+  Plot reaction{
+      "reaction of the soil on the penetrometer", "time (s)", "reaction (kN)", {}, false, false, false, "top right"};
   for (const auto& r : runs) {
     const CsvData h = results.history(r.index);
     depth.series.push_back(column_series(h, "time_s", "penetration_m", r.label, 100.0));
@@ -82,8 +83,15 @@ void ffp_time_histories_figure(const StudyResults& results, const std::vector<La
 }
 
 std::vector<std::string> ffp_table_header() {
-  return {"run", "peak deceleration [g]", "time of peak [s]", "depth of peak [cm]", "max penetration [cm]",
-          "final penetration [cm]", "rebound [cm]", "steps", "wall time [s]"};
+  return {"run",
+          "peak deceleration [g]",
+          "time of peak [s]",
+          "depth of peak [cm]",
+          "max penetration [cm]",
+          "final penetration [cm]",
+          "rebound [cm]",
+          "steps",
+          "wall time [s]"};
 }
 
 std::vector<std::vector<std::string>> ffp_table_rows(const StudyResults& results,
@@ -99,8 +107,8 @@ std::vector<std::vector<std::string>> ffp_table_rows(const StudyResults& results
                     fixed(100 * figure(results, r.index, "depth_of_peak_m"), 1),
                     fixed(100 * figure(results, r.index, "max_penetration_m"), 1),
                     fixed(100 * figure(results, r.index, "final_penetration_m"), 1),
-                    fixed(100 * figure(results, r.index, "rebound_m"), 2),
-                    fixed(figure(results, r.index, "steps"), 0), fixed(figure(results, r.index, "wall_time_s"), 1)});
+                    fixed(100 * figure(results, r.index, "rebound_m"), 2), fixed(figure(results, r.index, "steps"), 0),
+                    fixed(figure(results, r.index, "wall_time_s"), 1)});
   }
   return rows;
 }

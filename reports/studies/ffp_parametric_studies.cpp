@@ -62,14 +62,15 @@ Study ffp_compressibility_study(const std::filesystem::path& scenes_dir) {
     const double rigid = figure(results, 0, "wall_time_s");
     const double elastic = figure(results, 1, "wall_time_s");
     const double steel = figure(results, 2, "wall_time_s");
-    md.paragraph("Run time: the rigid body saves " + fixed(100 * (1 - rigid / elastic), 0) +
-                 " % against the 20 MPa body and " + fixed(100 * (1 - rigid / steel), 0) +
-                 " % against steel (whose time step is set by its P-wave speed). Final penetration difference "
-                 "elastic − rigid: " +
-                 fixed(100 * (figure(results, 1, "final_penetration_m") - figure(results, 0, "final_penetration_m")), 2) +
-                 " cm; steel − rigid: " +
-                 fixed(100 * (figure(results, 2, "final_penetration_m") - figure(results, 0, "final_penetration_m")), 2) +
-                 " cm.");
+    md.paragraph(
+        "Run time: the rigid body saves " + fixed(100 * (1 - rigid / elastic), 0) + " % against the 20 MPa body and " +
+        fixed(100 * (1 - rigid / steel), 0) +
+        " % against steel (whose time step is set by its P-wave speed). Final penetration difference "
+        "elastic − rigid: " +
+        fixed(100 * (figure(results, 1, "final_penetration_m") - figure(results, 0, "final_penetration_m")), 2) +
+        " cm; steel − rigid: " +
+        fixed(100 * (figure(results, 2, "final_penetration_m") - figure(results, 0, "final_penetration_m")), 2) +
+        " cm.");
     ffp_time_histories_figure(results, runs, "Rigid and elastic penetrometers", "fig7_rigid_elastic.png", out);
   };
   return study;
@@ -96,8 +97,7 @@ Study ffp_stiffness_study(const std::filesystem::path& scenes_dir) {
     for (std::size_t i : {0u, 1u, 2u}) {
       for (const char* t : {"0.040", "0.060"}) {
         include_run_figure(results, i, std::string("plots/deviatoric_strain_t") + t + ".png",
-                           "fig9_E" + std::to_string(i) + "_t" + t + ".png",
-                           runs[i].label + ", t = " + t + " s", out);
+                           "fig9_E" + std::to_string(i) + "_t" + t + ".png", runs[i].label + ", t = " + t + " s", out);
       }
     }
   };
@@ -108,8 +108,8 @@ Study ffp_contact_friction_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Contact friction angle (paper section 5.3, Fig. 10)";
   for (int d : {20, 25, 30, 35})
-    study.runs.push_back(
-        scene_run(scenes_dir, kReference, "δ = " + std::to_string(d) + "°", {"contact.delta_deg=" + std::to_string(d)}));
+    study.runs.push_back(scene_run(scenes_dir, kReference, "δ = " + std::to_string(d) + "°",
+                                   {"contact.delta_deg=" + std::to_string(d)}));
   study.runs.push_back(scene_run(scenes_dir, "ffp_rough.json", "fully rough"));
   study.write = [runs = all_runs(study)](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
@@ -127,7 +127,8 @@ Study ffp_dilatancy_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Transient dilatancy (paper section 5.4, Fig. 11)";
   for (double psi : {2.5, 5.0, 7.5, 10.0})
-    study.runs.push_back(scene_run(scenes_dir, kReference, "ψ_p = " + fixed(psi, 1) + "°", ssmc_overrides(39, 39, psi)));
+    study.runs.push_back(
+        scene_run(scenes_dir, kReference, "ψ_p = " + fixed(psi, 1) + "°", ssmc_overrides(39, 39, psi)));
   study.write = [runs = all_runs(study)](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
     md.paragraph(
@@ -163,21 +164,33 @@ Study ffp_peak_friction_study(const std::filesystem::path& scenes_dir) {
     }
     const auto [depth_a, depth_b] = fit_line(phi, depth);
     const auto [peak_a, peak_b] = fit_line(phi, peak);
-    Plot p13{"Final penetration and peak deceleration against φ'_p (Fig. 13)", "peak friction angle φ'_p (deg)",
-             "final penetration (cm) / peak deceleration (g)", {}, false, false, false, "top right"};
+    Plot p13{"Final penetration and peak deceleration against φ'_p (Fig. 13)",
+             "peak friction angle φ'_p (deg)",
+             "final penetration (cm) / peak deceleration (g)",
+             {},
+             false,
+             false,
+             false,
+             "top right"};
     p13.series.push_back({phi, depth, "final penetration (cm)", "points pt 7 ps 1.5"});
-    p13.series.push_back({{38, 61}, {depth_a + depth_b * 38, depth_a + depth_b * 61},
-                          "linear fit: " + fixed(depth_b, 3) + " cm per degree", "lines"});
+    p13.series.push_back({{38, 61},
+                          {depth_a + depth_b * 38, depth_a + depth_b * 61},
+                          "linear fit: " + fixed(depth_b, 3) + " cm per degree",
+                          "lines"});
     p13.series.push_back({phi, peak, "peak deceleration (g)", "points pt 5 ps 1.5"});
-    p13.series.push_back({{38, 61}, {peak_a + peak_b * 38, peak_a + peak_b * 61},
-                          "linear fit: " + fixed(peak_b, 3) + " g per degree", "lines"});
+    p13.series.push_back({{38, 61},
+                          {peak_a + peak_b * 38, peak_a + peak_b * 61},
+                          "linear fit: " + fixed(peak_b, 3) + " g per degree",
+                          "lines"});
     p13.series.push_back({{60}, {19.4}, "experiment: 19.4 g", "points pt 3 ps 2"});
     if (write_png(p13, out.figures_dir / "fig13_peak_friction_trends.png"))
       md.figure(out.figures_relative + "/fig13_peak_friction_trends.png",
                 "Final penetration and peak deceleration against φ'_p with least-squares lines (Fig. 13).");
     md.paragraph("Trends: final penetration " + fixed(depth_b, 3) + " cm and peak deceleration " + fixed(peak_b, 3) +
-                 " g per degree of φ'_p. With φ'_p = 60°: " + fixed(peak.back(), 1) + " g against the experiment's "
-                 "19.4 g (" + percent_difference(peak.back(), 19.4) + ").");
+                 " g per degree of φ'_p. With φ'_p = 60°: " + fixed(peak.back(), 1) +
+                 " g against the experiment's "
+                 "19.4 g (" +
+                 percent_difference(peak.back(), 19.4) + ").");
   };
   return study;
 }

@@ -53,7 +53,8 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
         "F_dyn(z) is the soil's reaction on the penetrometer in the paper's calibrated dynamic run (section 5.5: "
         "SSMC, φ'_p = 60°, φ'_c = 32°, ψ_p = 5°, η = 8); F_0(z) comes from pushing the same penetrometer at a "
         "constant speed into the same sand with the quasi-static φ'_p = 39° (the paper pushes at v_ref = 2 cm/s; "
-        "we push at 25 cm/s and check the speed does not matter by pushing at 12.5 cm/s too). K(z) follows from paper eq. 6 with the dynamic run's velocity: "
+        "we push at 25 cm/s and check the speed does not matter by pushing at 12.5 cm/s too). K(z) follows from paper "
+        "eq. 6 with the dynamic run's velocity: "
         "K = (F_dyn/F_0 − 1)/log10(v/v_ref). Paper: K between 0.8 and 2.0 before the tip is fully embedded and "
         "about 0.75 after; literature 0.2–1.5.");
     const CsvData dynamic = results.history(0);
@@ -65,7 +66,8 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
     }
     std::vector<double> z0, f0, z_slow, f_slow;
     monotone_in_depth(push.column("penetration_m"), push.column("reaction_N"), z0, f0);
-    if (slow.has("penetration_m")) monotone_in_depth(slow.column("penetration_m"), slow.column("reaction_N"), z_slow, f_slow);
+    if (slow.has("penetration_m"))
+      monotone_in_depth(slow.column("penetration_m"), slow.column("reaction_N"), z_slow, f_slow);
 
     // Push-speed independence of F_0 over the common depths beyond 2 cm: the mean of |ΔF_0| relative to
     // the mean F_0 (the rows carry ±10 % noise of their own), and the largest |ΔF_0|.
@@ -119,7 +121,13 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
       stat.x.push_back(100 * z0[i]);
       stat.y.push_back(f0[i]);
     }
-    Plot forces{"Reaction profiles (Fig. 14a)", "penetration (cm)", "reaction (N)", {dyn, stat}, false, false, false,
+    Plot forces{"Reaction profiles (Fig. 14a)",
+                "penetration (cm)",
+                "reaction (N)",
+                {dyn, stat},
+                false,
+                false,
+                false,
                 "top left"};
     Plot factor{"Rate factor K (Fig. 14b)", "penetration (cm)", "K", {k_series}, false, false, false, "top right"};
     factor.series.push_back({{0, 25}, {0.2, 0.2}, "literature 0.2–1.5", "lines dashtype 2"});
@@ -128,17 +136,17 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
       md.figure(out.figures_relative + "/fig14_rate_factor.png", "F_dyn, F_0 and K against penetration (Fig. 14).");
     const double before = before_n ? before_sum / before_n : std::nan("");
     const double after = after_n ? after_sum / after_n : std::nan("");
-    md.table({"quantity", "paper", "ours"},
-             {{"K before full embedment (" + fixed(100 * shallowest, 1) + " cm ≤ z < cone height " +
-                   fixed(100 * cone_height, 1) + " cm; shallower, the embedded cone spans fewer than 3 cells)",
-               "0.8–2.0",
-               fixed(k_min_before, 2) + " to " + fixed(k_max_before, 2) + " (mean " + fixed(before, 2) + ")"},
-              {"K after full embedment (mean)", "≈ 0.75", fixed(after, 2)},
-              {"literature range", "0.2–1.5", ""},
-              {"F_0 change when the push speed halves (z > 2 cm)", "–",
-               "mean " + fixed(100 * sum_difference / std::max(sum_f0, 1e-9), 1) + " % of F_0; largest " +
-                   fixed(max_difference, 1) + " N (" + fixed(100 * max_difference / std::max(max_f0, 1e-9), 1) +
-                   " % of the largest F_0)"}});
+    md.table(
+        {"quantity", "paper", "ours"},
+        {{"K before full embedment (" + fixed(100 * shallowest, 1) + " cm ≤ z < cone height " +
+              fixed(100 * cone_height, 1) + " cm; shallower, the embedded cone spans fewer than 3 cells)",
+          "0.8–2.0", fixed(k_min_before, 2) + " to " + fixed(k_max_before, 2) + " (mean " + fixed(before, 2) + ")"},
+         {"K after full embedment (mean)", "≈ 0.75", fixed(after, 2)},
+         {"literature range", "0.2–1.5", ""},
+         {"F_0 change when the push speed halves (z > 2 cm)", "–",
+          "mean " + fixed(100 * sum_difference / std::max(sum_f0, 1e-9), 1) + " % of F_0; largest " +
+              fixed(max_difference, 1) + " N (" + fixed(100 * max_difference / std::max(max_f0, 1e-9), 1) +
+              " % of the largest F_0)"}});
   };
   return study;
 }

@@ -37,7 +37,8 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
   }
   // The same runs as the mesh-calibration study's: the cache shares them.
-  for (const auto& [h, scene] : kCalibrations) study.runs.push_back(scene_run(scenes_dir, scene, "calibration " + cm(h)));
+  for (const auto& [h, scene] : kCalibrations)
+    study.runs.push_back(scene_run(scenes_dir, scene, "calibration " + cm(h)));
   study.runs[4].expected_wall_s = 23;
   study.runs[5].expected_wall_s = 144;
   study.runs[6].expected_wall_s = 900;
@@ -78,11 +79,11 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     std::vector<std::vector<std::string>> rows;
     for (std::size_t i = 0; i < levels; ++i) {
       const bool has_scaled = i < 3;
-      rows.push_back({cm(kMinCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
-                      fixed(figure(results, i, "wall_time_s"), 1), fixed(peak[i], 2), fixed(100 * depth[i], 2),
-                      has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–",
-                      has_scaled ? fixed(scaled_eta[i], 2) : "–", has_scaled ? fixed(scaled_peak[i], 2) : "–",
-                      has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
+      rows.push_back(
+          {cm(kMinCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
+           fixed(figure(results, i, "wall_time_s"), 1), fixed(peak[i], 2), fixed(100 * depth[i], 2),
+           has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–", has_scaled ? fixed(scaled_eta[i], 2) : "–",
+           has_scaled ? fixed(scaled_peak[i], 2) : "–", has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
     }
     md.table({"min cell", "particles", "steps", "wall time [s]", "η = 8: 2 ms peak [g]", "final penetration [cm]",
               "η_cal(h)", "scaled η", "scaled: 2 ms peak [g]", "final penetration [cm]"},
@@ -96,9 +97,9 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
       }
       const Extrapolation e = richardson(q[n - 3], q[n - 2], q[n - 1]);
       text += std::string(" ") + unit + " per halving, " + (shrinking ? "shrinking" : "not shrinking") +
-              (std::isfinite(e.order) ? "; observed order " + fixed(e.order, 2) + ", Richardson " +
-                                            fixed(scale * e.value, 2) + " " + unit
-                                      : "; no observed order (not monotone or outside 0.3–4)");
+              (std::isfinite(e.order)
+                   ? "; observed order " + fixed(e.order, 2) + ", Richardson " + fixed(scale * e.value, 2) + " " + unit
+                   : "; no observed order (not monotone or outside 0.3–4)");
       return text;
     };
     md.paragraph(series("η = 8, 2 ms peak", peak.data(), levels, 1.0, "g") + ". " +
@@ -108,7 +109,8 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
                    series("Scaled η, final penetration", scaled_depth, 3, 100.0, "cm") + ".");
     std::vector<LabelledRun> runs;
     for (std::size_t i = 0; i < levels; ++i) runs.push_back({i, "η = 8, " + cm(kMinCells_m[i])});
-    ffp_depth_profiles_figure(results, runs, "Softening run, mesh convergence", "softening_convergence_profiles.png", out);
+    ffp_depth_profiles_figure(results, runs, "Softening run, mesh convergence", "softening_convergence_profiles.png",
+                              out);
   };
   return study;
 }

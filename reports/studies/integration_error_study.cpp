@@ -1,7 +1,7 @@
 /// Error against run time of the constitutive integration (issue: models).
+#include "drivers/integration_study.hpp"
 #include "reports/studies/studies.hpp"
 #include "reports/studies/study_helpers.hpp"
-#include "drivers/integration_study.hpp"
 
 namespace ffp {
 

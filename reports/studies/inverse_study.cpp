@@ -21,7 +21,15 @@ constexpr double kPaperPhi_deg = 60.0;
 const std::vector<double> kScanPhi_deg = {44, 48, 50, 52, 55, 60};
 const std::vector<double> kScanCells_m = {0.02, 0.01};
 
-enum Run : std::size_t { record, synthetic_2cm, synthetic_1cm, experiment_2cm, experiment_1cm, experiment_phi_e_2cm, scan };
+enum Run : std::size_t {
+  record,
+  synthetic_2cm,
+  synthetic_1cm,
+  experiment_2cm,
+  experiment_1cm,
+  experiment_phi_e_2cm,
+  scan
+};
 
 const char* kPhiAndE =
     "parameters=[{\"key\":\"material.phi_peak_deg\",\"initial\":50,\"lower\":39,\"upper\":70},"
@@ -44,7 +52,8 @@ double crossing(const std::vector<double>& x, const std::vector<double>& y, doub
 std::string with_error(const nlohmann::json& s, const std::string& key, int decimals) {
   const double v = parameter(s, key, "value"), e = parameter(s, key, "standard_error");
   if (!std::isfinite(v)) return "–";
-  return fixed(v, decimals) + (std::isfinite(e) ? " ± " + fixed(e, decimals) : " (no error: as many targets as parameters)");
+  return fixed(v, decimals) +
+         (std::isfinite(e) ? " ± " + fixed(e, decimals) : " (no error: as many targets as parameters)");
 }
 
 }  // namespace
@@ -60,16 +69,17 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
   study.runs.back().expected_wall_s = 200;
   study.runs.push_back(scene_run(scenes_dir, "inverse_experiment.json", "inverse experiment 2 cm"));
   study.runs.back().expected_wall_s = 30;
-  study.runs.push_back(scene_run(scenes_dir, "inverse_experiment.json", "inverse experiment 1 cm", {"forward_overrides=[]"}));
+  study.runs.push_back(
+      scene_run(scenes_dir, "inverse_experiment.json", "inverse experiment 1 cm", {"forward_overrides=[]"}));
   study.runs.back().expected_wall_s = 120;
-  study.runs.push_back(scene_run(scenes_dir, "inverse_experiment.json", "inverse experiment phi and E 2 cm", {kPhiAndE}));
+  study.runs.push_back(
+      scene_run(scenes_dir, "inverse_experiment.json", "inverse experiment phi and E 2 cm", {kPhiAndE}));
   study.runs.back().expected_wall_s = 60;
   for (double h : kScanCells_m)
     for (double phi : kScanPhi_deg) {
-      study.runs.push_back(scene_run(scenes_dir, "ffp_peak_friction.json",
-                                     "scan phi " + fixed(phi, 0) + " " + fixed(100 * h, 0) + " cm",
-                                     {"mesh.min_cell_m=" + fixed(h, 3), "material.phi_peak_deg=" + fixed(phi, 1),
-                                      "output.field_times_s=[]"}));
+      study.runs.push_back(scene_run(
+          scenes_dir, "ffp_peak_friction.json", "scan phi " + fixed(phi, 0) + " " + fixed(100 * h, 0) + " cm",
+          {"mesh.min_cell_m=" + fixed(h, 3), "material.phi_peak_deg=" + fixed(phi, 1), "output.field_times_s=[]"}));
       study.runs.back().expected_wall_s = h < 0.015 ? 5.0 : 1.5;
     }
 
@@ -86,10 +96,13 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
         "record here is synthetic: the reference drop (MC, φ'_p = 39°, E' = 2500 kPa) computed at 1 cm with "
         "Gaussian noise of 1 % of its peak (data/records/README.md).");
     const auto r = results.summary(record);
-    md.table({"peak deceleration [g]", "depth of peak [cm]", "deepest point [cm]", "final penetration [cm]", "impact velocity [m/s]"},
-             {{fixed(figure(results, record, "peak_deceleration_g"), 2), fixed(100 * figure(results, record, "depth_of_peak_m"), 2),
+    md.table({"peak deceleration [g]", "depth of peak [cm]", "deepest point [cm]", "final penetration [cm]",
+              "impact velocity [m/s]"},
+             {{fixed(figure(results, record, "peak_deceleration_g"), 2),
+               fixed(100 * figure(results, record, "depth_of_peak_m"), 2),
                fixed(100 * figure(results, record, "max_penetration_m"), 2),
-               fixed(100 * figure(results, record, "final_penetration_m"), 2), fixed(figure(results, record, "impact_velocity_m_s"), 2)}});
+               fixed(100 * figure(results, record, "final_penetration_m"), 2),
+               fixed(figure(results, record, "impact_velocity_m_s"), 2)}});
     include_run_figure(results, record, "plots/depth_profiles.png", "record_depth_profiles.png",
                        "The synthetic record interpreted: net deceleration, velocity, q_dyn and q_sbc against depth "
                        "(q on a log axis: the tip's first touch has a tiny area).",
@@ -110,11 +123,12 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
       const double e_se = parameter(s, "material.E_kPa", "standard_error");
       rows.push_back({mesh, with_error(s, "material.phi_peak_deg", 2), fixed((phi - kTruePhi_deg) / phi_se, 1),
                       with_error(s, "material.E_kPa", 0), fixed((e - kTrueE_kPa) / e_se, 1),
-                      fixed(figure(results, run, "profile_rms_misfit_g"), 3), fixed(figure(results, run, "model_runs"), 0),
-                      fixed(figure(results, run, "iterations"), 0), fixed(figure(results, run, "wall_time_s"), 0)});
+                      fixed(figure(results, run, "profile_rms_misfit_g"), 3),
+                      fixed(figure(results, run, "model_runs"), 0), fixed(figure(results, run, "iterations"), 0),
+                      fixed(figure(results, run, "wall_time_s"), 0)});
     }
-    md.table({"forward mesh", "φ'_p [°]", "(φ'_p − 39°)/SE", "E' [kPa]", "(E' − 2500)/SE", "rms misfit [g]", "model runs",
-              "iterations", "wall time [s]"},
+    md.table({"forward mesh", "φ'_p [°]", "(φ'_p − 39°)/SE", "E' [kPa]", "(E' − 2500)/SE", "rms misfit [g]",
+              "model runs", "iterations", "wall time [s]"},
              rows);
     md.paragraph(
         "Reading: at the record's own mesh the fit should give back the true values within about two standard "
@@ -123,9 +137,9 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
         " g); at 2 cm it returns the parameters with which the coarse mesh imitates the fine one, so the "
         "distance from the truth there is the mesh's bias, not the fit's error. Wall times are measured inside "
         "the report, with other runs beside them on the 2 cores.");
-    include_run_figure(results, synthetic_2cm, "plots/fit.png", "inverse_synthetic_2cm.png",
-                       "The synthetic record against the starting run (φ'_p 35°, E' 4000 kPa) and the fitted run, 2 cm cells.",
-                       out);
+    include_run_figure(
+        results, synthetic_2cm, "plots/fit.png", "inverse_synthetic_2cm.png",
+        "The synthetic record against the starting run (φ'_p 35°, E' 4000 kPa) and the fitted run, 2 cm cells.", out);
 
     md.paragraph(
         "Validation: the paper's section 5.5 sand (SSMC, φ'_c = 32°, ψ_p = 5° → 0, η = 8, E' = 2500 kPa) with "
@@ -133,7 +147,8 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
         "14.4–16.0 cm), residuals (model − target) over 1 g and 0.8 cm. The measured record itself is not "
         "public, so only these two numbers can be matched. The paper's answer is φ'_p = 60°.");
     std::vector<std::vector<std::string>> fits;
-    for (const auto& [run, what] : {std::pair{experiment_2cm, "φ'_p, 2 cm"}, {experiment_1cm, "φ'_p, 1 cm"},
+    for (const auto& [run, what] : {std::pair{experiment_2cm, "φ'_p, 2 cm"},
+                                    {experiment_1cm, "φ'_p, 1 cm"},
                                     {experiment_phi_e_2cm, "φ'_p and E', 2 cm"}}) {
       const auto s = results.summary(run);
       fits.push_back({what, with_error(s, "material.phi_peak_deg", 1),
@@ -180,13 +195,18 @@ Study inverse_study(const std::filesystem::path& scenes_dir) {
                    fixed(crossing(p.x, p.y, kExperimentPeak_g), 1) + "° for the peak and " +
                    fixed(crossing(z.x, z.y, 100 * kExperimentPenetration_m), 1) + "° for the penetration";
     }
-    md.paragraph("Each figure alone, read off the scan below (linear between its points), wants its own φ'_p: " +
-                 crossings +
-                 ". Where the two differ no φ'_p matches both, and the fit is the compromise their scales set; "
-                 "fitting E' as well gives the model a second knob (the third row), with no error estimate left.");
-    peak.push_back({{kScanPhi_deg.front(), kScanPhi_deg.back()}, {kExperimentPeak_g, kExperimentPeak_g}, "experiment", "lines dashtype 2"});
+    md.paragraph(
+        "Each figure alone, read off the scan below (linear between its points), wants its own φ'_p: " + crossings +
+        ". Where the two differ no φ'_p matches both, and the fit is the compromise their scales set; "
+        "fitting E' as well gives the model a second knob (the third row), with no error estimate left.");
+    peak.push_back({{kScanPhi_deg.front(), kScanPhi_deg.back()},
+                    {kExperimentPeak_g, kExperimentPeak_g},
+                    "experiment",
+                    "lines dashtype 2"});
     penetration.push_back({{kScanPhi_deg.front(), kScanPhi_deg.back()},
-                           {100 * kExperimentPenetration_m, 100 * kExperimentPenetration_m}, "experiment (derived)", "lines dashtype 2"});
+                           {100 * kExperimentPenetration_m, 100 * kExperimentPenetration_m},
+                           "experiment (derived)",
+                           "lines dashtype 2"});
     Plot cost_plot{"Misfit to the experiment against φ'_p", "φ'_p (°)", "cost ½Σr²", cost};
     cost_plot.log_y = true;
     Plot peak_plot{"Peak deceleration", "φ'_p (°)", "peak deceleration (g)", peak};

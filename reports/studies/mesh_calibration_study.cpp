@@ -33,8 +33,14 @@ Study mesh_calibration_study(const std::filesystem::path& scenes_dir) {
     const char* names[] = {"element test (no mesh)", "MPM, 2 cm cells", "MPM, 1 cm cells (the FFP's)",
                            "MPM, 0.5 cm cells"};
     std::vector<std::vector<std::string>> rows;
-    Plot curves{"Fitted curves on each mesh against the lab (D_r = 15 %)", "axial strain (%)",
-                "deviatoric stress q (kPa)", {}, false, false, false, "top right"};
+    Plot curves{"Fitted curves on each mesh against the lab (D_r = 15 %)",
+                "axial strain (%)",
+                "deviatoric stress q (kPa)",
+                {},
+                false,
+                false,
+                false,
+                "top right"};
     for (std::size_t i = 0; i < results.size(); ++i) {
       const auto s = results.summary(i);
       if (s.empty()) {
@@ -70,8 +76,9 @@ Study mesh_calibration_study(const std::filesystem::path& scenes_dir) {
     if (write_png(curves, out.figures_dir / "calibration_mesh_curves.png"))
       md.figure(out.figures_relative + "/calibration_mesh_curves.png",
                 "q–ε_a of the fitted model on each mesh and the lab points: one W, different shapes.");
-    md.paragraph("The 1 cm value is the one the paper's procedure gives for the FFP model; the summary study feeds "
-                 "it to ffp_calibrated.json.");
+    md.paragraph(
+        "The 1 cm value is the one the paper's procedure gives for the FFP model; the summary study feeds "
+        "it to ffp_calibrated.json.");
   };
   return study;
 }

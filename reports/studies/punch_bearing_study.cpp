@@ -22,7 +22,8 @@ struct Punch {
   const char* label;
   double exact;
 };
-const Punch kPunches[] = {{"punch_smooth.json", "smooth", kShieldSmooth}, {"punch_rough.json", "rough", kEasonShieldRough}};
+const Punch kPunches[] = {{"punch_smooth.json", "smooth", kShieldSmooth},
+                          {"punch_rough.json", "rough", kEasonShieldRough}};
 
 }  // namespace
 
@@ -31,7 +32,8 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
   study.title = "Verification: a rigid circular punch on a Tresca soil";
   for (const Punch& punch : kPunches)
     for (double h : kMinCells_m) {
-      study.runs.push_back(scene_run(scenes_dir, punch.scene, std::string(punch.label) + " " + fixed(100 * h, 2) + " cm",
+      study.runs.push_back(scene_run(scenes_dir, punch.scene,
+                                     std::string(punch.label) + " " + fixed(100 * h, 2) + " cm",
                                      {"mesh.min_cell_m=" + fixed(h, 4)}));
       study.runs.back().expected_wall_s = 5.0 * std::pow(0.005 / h, 3);  // 0.5 cm: about 5 s on 2 cores
     }
@@ -86,7 +88,8 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
     // Richardson from the three levels: the MPM's own h → 0 limit, to set against the exact one.
     std::string limits;
     for (std::size_t k = 0; k < 2; ++k) {
-      const double n1 = figure(results, k * levels, "bearing_factor"), n2 = figure(results, k * levels + 1, "bearing_factor"),
+      const double n1 = figure(results, k * levels, "bearing_factor"),
+                   n2 = figure(results, k * levels + 1, "bearing_factor"),
                    n3 = figure(results, k * levels + 2, "bearing_factor");
       const Extrapolation e = richardson(n1, n2, n3);
       rows.push_back({kPunches[k].label, "h → 0 (Richardson)", "–", "–", "–", "–", fixed(e.value, 3),
@@ -108,33 +111,43 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
     for (const auto& [ppc, i] : by_density) {
       const double n = figure(results, i, "bearing_factor");
       density.push_back({std::to_string(ppc) + "×" + std::to_string(ppc) + (ppc == 3 ? " (the scene)" : ""),
-                         fixed(figure(results, i, "particles"), 0), fixed(n, 3), fixed(100 * (n / kShieldSmooth - 1), 1)});
+                         fixed(figure(results, i, "particles"), 0), fixed(n, 3),
+                         fixed(100 * (n / kShieldSmooth - 1), 1)});
     }
     md.paragraph("The smooth punch at 0.5 cm with other particle densities below it (the quadrature of the cells):");
     md.table({"particles per min cell", "particles", "bearing factor", "error [%]"}, density);
     const double one_point = figure(results, first_density, "bearing_factor");
     md.paragraph(
         "Reading: at the scenes' settings the MPM over-predicts both limit pressures and the error shrinks more "
-        "slowly than h (the observed orders above), so the default 0.5 cm mesh (R/h = 10) is outside 3 % of the exact values. "
+        "slowly than h (the observed orders above), so the default 0.5 cm mesh (R/h = 10) is outside 3 % of the exact "
+        "values. "
         "Under the punch the soil is at q = 2c' and its mean stress is too high, so the excess is in the soil's "
         "discretisation rather than in the contact: the constrained node at the punch's edge drags the next half "
         "cell of soil down (a slightly larger effective radius, first order in h), and the excess falls with the "
-        "number of particles in a cell (one per cell, a one-point quadrature: " + fixed(one_point, 2) + ", " +
-        fixed(100 * (one_point / kShieldSmooth - 1), 1) + " % high at 0.5 cm), the mark of cells too stiff in "
+        "number of particles in a cell (one per cell, a one-point quadrature: " +
+        fixed(one_point, 2) + ", " + fixed(100 * (one_point / kShieldSmooth - 1), 1) +
+        " % high at 0.5 cm), the mark of cells too stiff in "
         "plastic flow: the cell-mean (B-bar) smoothing frees the volumetric constraint only. The FFP's cone "
         "resistance is bearing of the same kind and carries part of this bias. A remedy that holds at large "
         "deformation (one-point quadrature needs hourglass control) is open work; the scenes keep 3×3 per cell.");
     Plot curves_plot{"Pressure–settlement of the punches", "settlement / radius s/R", "mean pressure / c'", curves};
     curves_plot.key_position = "bottom right";
-    curves_plot.series.push_back({{0.0, 0.06}, {kShieldSmooth, kShieldSmooth}, "Shield 1955 (smooth)", "lines dashtype 2"});
+    curves_plot.series.push_back(
+        {{0.0, 0.06}, {kShieldSmooth, kShieldSmooth}, "Shield 1955 (smooth)", "lines dashtype 2"});
     curves_plot.series.push_back(
         {{0.0, 0.06}, {kEasonShieldRough, kEasonShieldRough}, "Eason & Shield 1960 (rough)", "lines dashtype 2"});
     if (write_png(curves_plot, out.figures_dir / "punch_pressure_settlement.png"))
       md.figure(out.figures_relative + "/punch_pressure_settlement.png",
                 "Mean pressure over c' against settlement over radius, each punch at each mesh size, with the exact "
                 "limits.");
-    Plot error_plot{"Bearing factor error against mesh size", "h / R", "|N − N_exact| / N_exact",
-                    {error_series[0], error_series[1]}, true, true, false, "bottom right"};
+    Plot error_plot{"Bearing factor error against mesh size",
+                    "h / R",
+                    "|N − N_exact| / N_exact",
+                    {error_series[0], error_series[1]},
+                    true,
+                    true,
+                    false,
+                    "bottom right"};
     if (write_png(error_plot, out.figures_dir / "punch_convergence.png"))
       md.figure(out.figures_relative + "/punch_convergence.png",
                 "Relative error of the bearing factor against h/R (log–log).");

@@ -78,7 +78,8 @@ std::map<std::string, KeySet> readme_keys() {
       kinds.clear();
       common = false;
       if (line.rfind("### `", 0) == 0) {
-        const std::string title = line.substr(4, line.find(':') == std::string::npos ? std::string::npos : line.find(':') - 4);
+        const std::string title =
+            line.substr(4, line.find(':') == std::string::npos ? std::string::npos : line.find(':') - 4);
         kinds = backticked(title);
       }
       continue;
@@ -91,7 +92,9 @@ std::map<std::string, KeySet> readme_keys() {
     const std::vector<std::string> row = cells(line);
     if (table == Table::none) {
       const std::string first = trim(row.front());
-      table = first == "key" ? Table::keys : first == "type" && kinds == std::vector<std::string>{"point"} ? Table::path_types : Table::other;
+      table = first == "key"                                                  ? Table::keys
+              : first == "type" && kinds == std::vector<std::string>{"point"} ? Table::path_types
+                                                                              : Table::other;
       continue;
     }
     if (line.rfind("|---", 0) == 0 || line.rfind("|:-", 0) == 0 || table == Table::other) continue;
@@ -138,7 +141,8 @@ KeySet reader_keys(const std::vector<std::pair<std::string, std::vector<std::str
 }
 
 bool below(const std::string& key, const std::string& parent) {
-  return key.size() > parent.size() && key.rfind(parent, 0) == 0 && (key[parent.size()] == '.' || key[parent.size()] == '[');
+  return key.size() > parent.size() && key.rfind(parent, 0) == 0 &&
+         (key[parent.size()] == '.' || key[parent.size()] == '[');
 }
 
 /// A reader's key is documented when README lists it, when it is an object whose keys README lists,
@@ -185,20 +189,22 @@ TEST_CASE("README's key tables list exactly the keys the readers accept", "[app]
       R"(path={"type": "general", "segments": [{"control": ["stress", "strain", "stress", "strain", "strain", "strain"], )"
       R"("target": [1.72, 0.01, 1.72, 0, 0, 0]}]})";
   SECTION("point") {
-    check_kind("point",
-               reader_keys({{"point_isotropic", {}},
-                            {"point_oedometric", {}},
-                            {"point_simple_shear", {}},
-                            {"point_triaxial_mc", {"initial_pressure_kPa=null", "initial_stress_kPa=[1.72,1.72,1.72,0,0,0]"}},
-                            {"point_triaxial_extension_mc", {}},
-                            {"point_triaxial_ssmc", {"initial_state={\"plastic_deviatoric_strain\": 0.01}"}},
-                            {"point_triaxial_ssmc_bolton", {}},
-                            {"point_triaxial_ssmc_rate", {"initial_state={\"strain_rate_per_s\": 0.001}"}},
-                            {"point_triaxial_mc", {segments, "initial_pressure_kPa=1.72"}},
-                            {"point_triaxial_mc",
-                             {"path={\"type\": \"general\", \"table_csv\": \"" + table.string() + "\", \"increments_per_row\": 10}",
-                              "initial_pressure_kPa=1.72"}}}),
-               readme);
+    check_kind(
+        "point",
+        reader_keys(
+            {{"point_isotropic", {}},
+             {"point_oedometric", {}},
+             {"point_simple_shear", {}},
+             {"point_triaxial_mc", {"initial_pressure_kPa=null", "initial_stress_kPa=[1.72,1.72,1.72,0,0,0]"}},
+             {"point_triaxial_extension_mc", {}},
+             {"point_triaxial_ssmc", {"initial_state={\"plastic_deviatoric_strain\": 0.01}"}},
+             {"point_triaxial_ssmc_bolton", {}},
+             {"point_triaxial_ssmc_rate", {"initial_state={\"strain_rate_per_s\": 0.001}"}},
+             {"point_triaxial_mc", {segments, "initial_pressure_kPa=1.72"}},
+             {"point_triaxial_mc",
+              {"path={\"type\": \"general\", \"table_csv\": \"" + table.string() + "\", \"increments_per_row\": 10}",
+               "initial_pressure_kPa=1.72"}}}),
+        readme);
   }
   SECTION("triaxial") {
     check_kind("triaxial", reader_keys({{"triaxial_mc", {}}, {"triaxial_ssmc_paper", {}}}), readme);
@@ -212,21 +218,21 @@ TEST_CASE("README's key tables list exactly the keys the readers accept", "[app]
                             {"calibration_dr15_mpm_2cm", {}}}),
                readme);
   }
-  SECTION("integration_error") {
-    check_kind("integration_error", reader_keys({{"integration_error", {}}}), readme);
-  }
+  SECTION("integration_error") { check_kind("integration_error", reader_keys({{"integration_error", {}}}), readme); }
   SECTION("mpm") {
-    check_kind("mpm",
-               reader_keys({{"mpm_wave_column", {}},
-                            {"mpm_geostatic_column", {}},
-                            {"mpm_colliding_spheres", {}},
-                            {"mpm_wave_column",
-                             {"mesh={\"r_nodes_m\": [0.01, 0.02, 0.03], \"z_nodes_m\": [0, 0.25, 0.5, 0.75, 1]}",
-                              "boundaries.axis=null", "boundaries.inner=free", "output.probes=[]",
-                              "bodies.0.region.r_min_m=0.01", "bodies.0.region.r_max_m=0.03", "solver.dt_s=1e-5",
-                              "output.field_interval_s=null", "output.field_times_s=[0.01]",
-                              "surface_pressures=[{\"side\": \"outer\", \"pressure_kPa\": 1, \"z_min_m\": 0, \"z_max_m\": 0.5}]"}}}),
-               readme);
+    check_kind(
+        "mpm",
+        reader_keys(
+            {{"mpm_wave_column", {}},
+             {"mpm_geostatic_column", {}},
+             {"mpm_colliding_spheres", {}},
+             {"mpm_wave_column",
+              {"mesh={\"r_nodes_m\": [0.01, 0.02, 0.03], \"z_nodes_m\": [0, 0.25, 0.5, 0.75, 1]}",
+               "boundaries.axis=null", "boundaries.inner=free", "output.probes=[]", "bodies.0.region.r_min_m=0.01",
+               "bodies.0.region.r_max_m=0.03", "solver.dt_s=1e-5", "output.field_interval_s=null",
+               "output.field_times_s=[0.01]",
+               "surface_pressures=[{\"side\": \"outer\", \"pressure_kPa\": 1, \"z_min_m\": 0, \"z_max_m\": 0.5}]"}}}),
+        readme);
   }
   SECTION("ffp") {
     check_kind("ffp",
@@ -237,22 +243,28 @@ TEST_CASE("README's key tables list exactly the keys the readers accept", "[app]
                             {"ffp_dilatancy", {}},
                             {"ffp_peak_friction", {}},
                             {"ffp_calibrated", {}},
-                            {"ffp_reference", {"ffp.tip=flat", "ffp.cone_apex_angle_deg=null", "ffp.external_force_N=10",
-                                               "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005"}}}),
+                            {"ffp_reference",
+                             {"ffp.tip=flat", "ffp.cone_apex_angle_deg=null", "ffp.external_force_N=10",
+                              "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005"}}}),
                readme);
   }
   SECTION("cpt") {
     check_kind("cpt",
-               reader_keys({{"cpt_reference", {}}, {"cpt_slow", {}}, {"punch_smooth", {}}, {"punch_rough", {}},
-                            {"cpt_reference", {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null",
-                                               "soil.near_spacing_m=0.005"}}}),
+               reader_keys({{"cpt_reference", {}},
+                            {"cpt_slow", {}},
+                            {"punch_smooth", {}},
+                            {"punch_rough", {}},
+                            {"cpt_reference",
+                             {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null",
+                              "soil.near_spacing_m=0.005"}}}),
                readme);
   }
   SECTION("record") {
     check_kind("record",
                reader_keys({{"record_reference", {}},
-                            {"record_reference", {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null",
-                                                  "impact_velocity_m_s=null", "sensor_range_g=100"}},
+                            {"record_reference",
+                             {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null", "impact_velocity_m_s=null",
+                              "sensor_range_g=100"}},
                             {"record_reference", {"sensor_range_m_s2=1000", "drag_coefficient=0.5"}}}),
                readme);
   }

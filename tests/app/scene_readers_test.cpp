@@ -7,12 +7,12 @@
 #include <catch2/catch.hpp>
 
 #include "drivers/app/calibration_scene.hpp"
-#include "models/math_constants.hpp"
 #include "drivers/app/ffp_scene.hpp"
 #include "drivers/app/integration_error_scene.hpp"
 #include "drivers/app/inverse_scene.hpp"
 #include "drivers/app/mpm_scene.hpp"
 #include "drivers/app/record_scene.hpp"
+#include "models/math_constants.hpp"
 #include "tests/app/shipped_scene.hpp"
 
 using namespace ffp;
@@ -59,11 +59,10 @@ InverseScene inverse_scene(const std::vector<std::string>& overrides = {}) {
   return out;
 }
 
-
-
 }  // namespace
 
-TEST_CASE("calibration reader: calibration_dr15 is the paper's element-test fit of η from 8", "[app][scene][calibration]") {
+TEST_CASE("calibration reader: calibration_dr15 is the paper's element-test fit of η from 8",
+          "[app][scene][calibration]") {
   const CalibrationScene c = calibration("calibration_dr15");
   CHECK(c.lab_file.filename() == "triaxial_dr15.csv");
   CHECK(c.lab.axial_strain.size() == 49);
@@ -84,7 +83,8 @@ TEST_CASE("calibration reader: calibration_dr15 is the paper's element-test fit 
   CHECK_FALSE(c.fitted_peak_friction);
 }
 
-TEST_CASE("calibration reader: calibration_dr15_mpm_2cm is the meshed specimen with the mpm defaults", "[app][scene][calibration]") {
+TEST_CASE("calibration reader: calibration_dr15_mpm_2cm is the meshed specimen with the mpm defaults",
+          "[app][scene][calibration]") {
   const CalibrationScene c = calibration("calibration_dr15_mpm_2cm");
   CHECK(c.specimen == SpecimenType::mpm);
   CHECK(c.mpm.cell_m == 0.02);
@@ -99,15 +99,17 @@ TEST_CASE("calibration reader: calibration_dr15_mpm_2cm is the meshed specimen w
   CHECK(c.settings.derivative_step == 0.1);
   CHECK(c.settings.parameter_tolerance == 1e-4);
   CHECK(c.settings.work_tolerance == 2e-4);
-  CHECK(calibration("calibration_dr15_mpm_2cm", {"specimen.platens=smooth", "specimen.shape_function=linear"}).mpm.platens ==
-        PlatenFriction::smooth);
-  CHECK(calibration("calibration_dr15", {"mode=curve_least_squares"}).settings.mode == CalibrationMode::curve_least_squares);
+  CHECK(calibration("calibration_dr15_mpm_2cm", {"specimen.platens=smooth", "specimen.shape_function=linear"})
+            .mpm.platens == PlatenFriction::smooth);
+  CHECK(calibration("calibration_dr15", {"mode=curve_least_squares"}).settings.mode ==
+        CalibrationMode::curve_least_squares);
 }
 
 TEST_CASE("calibration reader: a bad key names itself and what it may be", "[app][scene][calibration]") {
   CHECK(calibration_error("calibration_dr15", "mode=least") ==
         "mode: 'least' is not allowed: must be one of: dissipated_work, curve_least_squares");
-  CHECK(calibration_error("calibration_dr15", "eta_min=-1") == "eta_min: = -1 is out of range: must be > 0 and ≤ 10000");
+  CHECK(calibration_error("calibration_dr15", "eta_min=-1") ==
+        "eta_min: = -1 is out of range: must be > 0 and ≤ 10000");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.platens=sticky") ==
         "specimen.platens: 'sticky' is not allowed: must be one of: rough, smooth");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.shape_function=quad") ==
@@ -165,7 +167,8 @@ TEST_CASE("mpm reader: the wave column and its bad keys", "[app][scene][mpm]") {
   CHECK(scene_error([] { mpm_scene("mpm_wave_column", {"solver.shape_function=3"}); }) ==
         "solver.shape_function: must be one of: linear, gimp; got a number");
   CHECK(scene_error([] { mpm_scene("mpm_wave_column", {"boundaries.inner=free"}); }) ==
-        "boundaries.inner: unknown key for boundaries (axis, outer, bottom, top); allowed keys: axis, bottom, outer, top");
+        "boundaries.inner: unknown key for boundaries (axis, outer, bottom, top); allowed keys: axis, bottom, outer, "
+        "top");
 }
 
 TEST_CASE("ffp reader: the reference drop and its bad keys", "[app][scene][ffp]") {

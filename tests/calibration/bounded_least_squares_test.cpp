@@ -50,7 +50,8 @@ TEST_CASE("a straight-line fit gives the ordinary least-squares values and stand
   double t_mean = 0.0, y_mean = 0.0;
   for (std::size_t i = 0; i < n; ++i) t_mean += t[i] / n, y_mean += y[i] / n;
   double sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) sxx += (t[i] - t_mean) * (t[i] - t_mean), sxy += (t[i] - t_mean) * (y[i] - y_mean);
+  for (std::size_t i = 0; i < n; ++i)
+    sxx += (t[i] - t_mean) * (t[i] - t_mean), sxy += (t[i] - t_mean) * (y[i] - y_mean);
   const double b = sxy / sxx, a = y_mean - b * t_mean;
   double ssr = 0.0;
   for (std::size_t i = 0; i < n; ++i) ssr += std::pow(a + b * t[i] - y[i], 2);
@@ -61,7 +62,7 @@ TEST_CASE("a straight-line fit gives the ordinary least-squares values and stand
   CHECK(*fit.standard_errors[0] == Approx(s * std::sqrt(1.0 / n + t_mean * t_mean / sxx)).epsilon(1e-6));
   CHECK(*fit.standard_errors[1] == Approx(s / std::sqrt(sxx)).epsilon(1e-6));
   CHECK(fit.correlation[0][1] < 0.0);  // intercept and slope trade off for t > 0
-  CHECK(largest_batch == 3);          // the point and its two neighbours, handed over together
+  CHECK(largest_batch == 3);           // the point and its two neighbours, handed over together
   CHECK(fit.final_cost == Approx(0.5 * ssr).epsilon(1e-8));
 }
 
@@ -82,8 +83,8 @@ TEST_CASE("a nonlinear fit within bounds finds the true parameters within two st
     }
     return out;
   };
-  const BoundedFit fit =
-      fit_bounded_least_squares({{"amplitude", 1.0, 0.5, 5.0, 1e-4}, {"rate", 0.5, 0.1, 3.0, 1e-4}}, static_cast<int>(n), decay);
+  const BoundedFit fit = fit_bounded_least_squares({{"amplitude", 1.0, 0.5, 5.0, 1e-4}, {"rate", 0.5, 0.1, 3.0, 1e-4}},
+                                                   static_cast<int>(n), decay);
   INFO(fit.termination);
   CHECK(fit.converged);
   REQUIRE(fit.standard_errors[1]);

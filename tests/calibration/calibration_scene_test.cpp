@@ -12,8 +12,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/scratch.hpp"
 #include "models/math_constants.hpp"
+#include "tests/support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -25,8 +25,8 @@ struct Scratch : ffp::test_support::Scratch {
   Scratch() : ffp::test_support::Scratch("ffp-calibration") {}
 };
 
-using ffp::test_support::run_ffp;
 using ffp::test_support::read_text;
+using ffp::test_support::run_ffp;
 
 bool gnuplot_on_path() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 
@@ -34,7 +34,8 @@ const std::string kScenes = std::string(FFP_SOURCE_DIR) + "/data/scenes/";
 
 }  // namespace
 
-TEST_CASE("calibration scenes: η matches the lab's dissipated work on both reconstructed curves", "[calibration][scene]") {
+TEST_CASE("calibration scenes: η matches the lab's dissipated work on both reconstructed curves",
+          "[calibration][scene]") {
   for (const char* scene : {"calibration_dr00.json", "calibration_dr15.json"}) {
     CAPTURE(scene);
     Scratch dir;
@@ -44,8 +45,7 @@ TEST_CASE("calibration scenes: η matches the lab's dissipated work on both reco
     CHECK(eta > 0.1);
     CHECK(eta < 500.0);
     CHECK(s["mode"] == "dissipated_work");
-    CHECK(s["dissipated_work_model_J"].get<double>() ==
-          Approx(s["dissipated_work_lab_J"].get<double>()).epsilon(1e-3));
+    CHECK(s["dissipated_work_model_J"].get<double>() == Approx(s["dissipated_work_lab_J"].get<double>()).epsilon(1e-3));
     CHECK(s["converged"].get<bool>());
     CHECK(s["iterations"].get<int>() >= 1);
     CHECK(s["work_decreases_with_eta"].get<bool>());
@@ -83,7 +83,8 @@ TEST_CASE("calibration scene: the curve criterion and the peak friction from the
   CHECK(s["peak_q_kPa"].get<double>() == Approx(6.2033).epsilon(3e-3));
 }
 
-TEST_CASE("calibration scene: a bad lab CSV is bad input (exit 2, one line, nothing written)", "[calibration][scene][errors]") {
+TEST_CASE("calibration scene: a bad lab CSV is bad input (exit 2, one line, nothing written)",
+          "[calibration][scene][errors]") {
   Scratch dir;
   dir.write("bad.csv", "axial_strain,deviatoric_stress_kPa\n0,0\n0.01,1\n0.005,2\n0.03,3\n0.04,4\n");
   const std::string scene = (dir.path / "scene.json").string();
@@ -106,7 +107,8 @@ TEST_CASE("calibration scene: a bad lab CSV is bad input (exit 2, one line, noth
   CHECK_FALSE(fs::exists(dir.path / "out"));
 }
 
-TEST_CASE("calibration scene: a lab curve no η in the bounds can match fails clearly (exit 1)", "[calibration][scene][errors]") {
+TEST_CASE("calibration scene: a lab curve no η in the bounds can match fails clearly (exit 1)",
+          "[calibration][scene][errors]") {
   Scratch dir;
   // φ'_p = 33° barely above φ'_c: even η = 0.1 dissipates less than the lab.
   CHECK(run_ffp(dir, kScenes + "calibration_dr00.json", "--set material.phi_peak_deg=33") == 1);

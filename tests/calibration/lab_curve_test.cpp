@@ -10,8 +10,8 @@
 
 #include "calibration/lab_curve.hpp"
 #include "drivers/scene/scene_error.hpp"
-#include "tests/support/scratch.hpp"
 #include "models/math_constants.hpp"
+#include "tests/support/scratch.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
@@ -55,8 +55,8 @@ TEST_CASE("the reconstructed lab curves load in SI units", "[calibration][lab]")
 
 TEST_CASE("a lab curve without volumetric strain is accepted and other columns are ignored", "[calibration][lab]") {
   Scratch dir;
-  const fs::path file =
-      dir.write("lab.csv", "time_s,axial_strain,deviatoric_stress_kPa\n0,0,0\n1,0.01,3\n2,0.02,4\n3,0.03,4.5\n4,0.04,4.2\n");
+  const fs::path file = dir.write(
+      "lab.csv", "time_s,axial_strain,deviatoric_stress_kPa\n0,0,0\n1,0.01,3\n2,0.02,4\n3,0.03,4.5\n4,0.04,4.2\n");
   const LabCurve c = read_lab_curve(file);
   CHECK(c.volumetric_strain.empty());
   CHECK(c.deviatoric_stress_Pa[3] == Approx(4500.0));
@@ -103,9 +103,7 @@ TEST_CASE("bad lab CSVs: one line naming the file, the line and what is allowed"
     CHECK(e.find("lab.csv") != std::string::npos);
     CHECK(e.find("empty") != std::string::npos);
   }
-  SECTION("a header and no data") {
-    CHECK(error_of(dir, kHeader).find("has 0 data row(s)") != std::string::npos);
-  }
+  SECTION("a header and no data") { CHECK(error_of(dir, kHeader).find("has 0 data row(s)") != std::string::npos); }
   SECTION("negative strain (extension, or the wrong sign convention)") {
     const std::string e = error_of(dir, kHeader + "-0.01,0,0\n0.01,3,0.001\n0.02,4,0.001\n0.03,4.5,0\n0.04,4.2,0\n");
     CHECK(e.find("lab.csv:3") != std::string::npos);
@@ -119,9 +117,7 @@ TEST_CASE("bad lab CSVs: one line naming the file, the line and what is allowed"
     CHECK(error_of(dir, kHeader + "0,0,0\n0.01,-3,0\n0.02,-4,0\n0.03,-4.5,0\n0.04,-4.2,0\n").find("never above 0") !=
           std::string::npos);
   }
-  SECTION("a missing file") {
-    CHECK_THROWS_AS(read_lab_curve(dir.path / "absent.csv"), SceneError);
-  }
+  SECTION("a missing file") { CHECK_THROWS_AS(read_lab_curve(dir.path / "absent.csv"), SceneError); }
   SECTION("ragged row") {
     CHECK(error_of(dir, kHeader + "0,0,0\n0.01,3\n0.02,4,0\n0.03,4.5,0\n0.04,4.2,0\n").find("lab.csv:4") !=
           std::string::npos);

@@ -14,8 +14,8 @@
 
 #include "calibration/mpm_triaxial_specimen.hpp"
 #include "calibration/softening_calibration.hpp"
-#include "tests/support/scratch.hpp"
 #include "models/math_constants.hpp"
+#include "tests/support/scratch.hpp"
 
 using namespace ffp;
 namespace fs = std::filesystem;
@@ -28,9 +28,8 @@ struct Scratch : ffp::test_support::Scratch {
   Scratch() : ffp::test_support::Scratch("ffp-mpm-specimen") {}
 };
 
-using ffp::test_support::run_ffp;
 using ffp::test_support::read_text;
-
+using ffp::test_support::run_ffp;
 
 /// The dr15 sand of data/scenes/calibration_dr15.json.
 StrainSofteningParameters dr15_sand(double eta) {
@@ -57,8 +56,7 @@ const std::string kScenes = std::string(FFP_SOURCE_DIR) + "/data/scenes/";
 
 }  // namespace
 
-TEST_CASE("MPM specimen, Mohr-Coulomb at 2 cm: drained triaxial peak equals sigma3(N_phi - 1)",
-          "[calibration][mpm]") {
+TEST_CASE("MPM specimen, Mohr-Coulomb at 2 cm: drained triaxial peak equals sigma3(N_phi - 1)", "[calibration][mpm]") {
   // Smooth platens: the stress stays homogeneous up to the peak, so the closed
   // form applies (rough ones add end restraint). ψ = 0, φ = 40°, σ3 = 1.72 kPa.
   MohrCoulombParameters mc;

@@ -20,7 +20,6 @@ using namespace ffp;
 
 namespace {
 
-
 StrainSofteningParameters ssmc(double E_kPa, double phi_peak_deg, double psi_peak_deg) {
   StrainSofteningParameters p;
   p.elastic = {1e3 * E_kPa, 0.33};
@@ -88,7 +87,8 @@ TEST_CASE("dissipated-work fit recovers η ∈ {2.5, 8, 15} from element-test cu
     for (std::uint32_t seed = 1; seed <= 5; ++seed) {
       CAPTURE(eta, seed);
       const LabCurve lab = synthetic_lab(sand, eta, 0.02, seed);
-      const CalibrationResult r = calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work));
+      const CalibrationResult r =
+          calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work));
       CHECK(r.eta == Approx(eta).epsilon(0.03));
       // The residual at the fitted η: below 0.1 % of W_lab (the fit reaches rounding).
       CHECK(std::abs(r.dissipated_work_model_J - r.dissipated_work_lab_J) < 1e-3 * r.dissipated_work_lab_J);
@@ -126,7 +126,8 @@ TEST_CASE("without noise both criteria recover η to the resolution of the curve
     const LabCurve lab = synthetic_lab(sand, eta, 0.0, 1);
     // W_lab by the trapezoid on 401 points cuts the corner at the peak by at most
     // V·E·h²/8 (h = 5e-4): 8.5e-5 of W, so ≤ 0.15 % in η at |d ln W/d ln η| ≥ 0.06.
-    const CalibrationResult work = calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work));
+    const CalibrationResult work =
+        calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work));
     CHECK(work.eta == Approx(eta).epsilon(0.0015));
     // The curve criterion compares q point by point: only interpolation between
     // the model's increments (h = 2e-4) separates the curves.
@@ -169,8 +170,10 @@ TEST_CASE("W at the calibration's 1000 increments: within 5e-5 of 10 000 increme
   }
   const LabCurve lab = read_lab_curve(std::filesystem::path(FFP_SOURCE_DIR) / "data" / "lab" / "triaxial_dr15.csv");
   const CalibrationSettings s = settings_for(CalibrationMode::dissipated_work);
-  const CalibrationResult coarse = calibrate_softening_factor(lab, element_test_triaxial(sand_dr15(), element_test(1000)), s);
-  const CalibrationResult fine = calibrate_softening_factor(lab, element_test_triaxial(sand_dr15(), element_test(10000)), s);
+  const CalibrationResult coarse =
+      calibrate_softening_factor(lab, element_test_triaxial(sand_dr15(), element_test(1000)), s);
+  const CalibrationResult fine =
+      calibrate_softening_factor(lab, element_test_triaxial(sand_dr15(), element_test(10000)), s);
   CHECK(coarse.eta == Approx(fine.eta).epsilon(1e-3));
 }
 
@@ -191,9 +194,9 @@ TEST_CASE("a lab curve no η in the bounds can match is a clear CalibrationFailu
   }
   SECTION("less work than the fastest softening") {
     for (double& q : lab.deviatoric_stress_Pa) q *= 0.7;
-    CHECK_THROWS_WITH(calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work)),
-                      Catch::Contains("less than the model with the fastest softening") &&
-                          Catch::Contains("W(η = 500)"));
+    CHECK_THROWS_WITH(
+        calibrate_softening_factor(lab, triaxial, settings_for(CalibrationMode::dissipated_work)),
+        Catch::Contains("less than the model with the fastest softening") && Catch::Contains("W(η = 500)"));
   }
   SECTION("narrower bounds that exclude the lab's η") {
     CalibrationSettings s = settings_for(CalibrationMode::dissipated_work);

@@ -41,8 +41,8 @@ TEST_CASE("a good scene writes summary.json with the scene and its defaults", "[
 TEST_CASE("a set override changes a key and the summary echoes it", "[cli]") {
   Scratch scratch;
   const auto file = scratch.write_json("scene.json", good_point_scene());
-  const auto r = run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"},
-                         scratch.path());
+  const auto r =
+      run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"}, scratch.path());
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   std::ifstream in(scratch.path() / "result" / "summary.json");
@@ -54,8 +54,8 @@ TEST_CASE("a complete run replaces an older result", "[cli]") {
   const auto file = scratch.write_json("scene.json", good_point_scene());
   REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path()).exit_code == 0);
   const auto first = fs::last_write_time(scratch.path() / "result" / "summary.json");
-  REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"},
-                  scratch.path()).exit_code == 0);
+  REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet", "--set", "material.E_kPa=5000"}, scratch.path())
+              .exit_code == 0);
   std::ifstream in(scratch.path() / "result" / "summary.json");
   CHECK(json::parse(in)["scene"]["material"]["E_kPa"] == 5000.0);
   CHECK(fs::last_write_time(scratch.path() / "result" / "summary.json") >= first);

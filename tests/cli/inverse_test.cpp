@@ -30,7 +30,10 @@ json inverse_scene(const std::string& record_csv) {
           {"forward_scene", FFP_SOURCE_DIR "/data/scenes/ffp_reference.json"},
           {"forward_overrides", kCoarse},
           {"record",
-           {{"record_csv", record_csv}, {"ffp", {{"mass_kg", 7.71}}}, {"impact_velocity_m_s", 5.6}, {"impact_time_s", 0.0}}},
+           {{"record_csv", record_csv},
+            {"ffp", {{"mass_kg", 7.71}}},
+            {"impact_velocity_m_s", 5.6},
+            {"impact_time_s", 0.0}}},
           {"parameters",
            {{{"key", "material.phi_peak_deg"}, {"initial", 35.0}, {"lower", 30.0}, {"upper", 50.0}},
             {{"key", "material.E_kPa"}, {"initial", 4000.0}, {"lower", 1000.0}, {"upper", 8000.0}}}}};
@@ -43,7 +46,8 @@ TEST_CASE("a synthetic record of the solver is fitted back to its phi and E with
   Scratch scratch;
   // The record: the reference FFP at 2 cm cells with φ'_p = 39° and E' = 2500 kPa (the scene's
   // own), its deceleration with Gaussian noise of 1 % of the peak added to every row.
-  std::vector<std::string> args = {"run", FFP_SOURCE_DIR "/data/scenes/ffp_reference.json", "--out", "truth", "--quiet"};
+  std::vector<std::string> args = {"run", FFP_SOURCE_DIR "/data/scenes/ffp_reference.json", "--out", "truth",
+                                   "--quiet"};
   for (const auto& o : kCoarse) args.insert(args.end(), {"--set", o});
   args.insert(args.end(), {"--set", "output.field_times_s=[]"});
   const auto truth = run_ffp(args, scratch.path());

@@ -28,7 +28,9 @@ std::string read_text(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 /// Starts `ffp ARGS` in `cwd` (stderr to /dev/null) and returns its pid.
 pid_t start_ffp(const std::vector<std::string>& args, const fs::path& cwd) {
@@ -153,8 +155,8 @@ TEST_CASE("report and sweep refuse folders holding the user's files before any r
   const auto report_cache = run_ffp({"report", "--out", "rep", "--cache", "mine"}, scratch.path());
   CHECK(report_cache.exit_code == 2);
   CHECK(report_cache.err.find("--cache") != std::string::npos);
-  const auto sweep = run_ffp({"sweep", file.string(), "--set", "material.E_kPa=1000,2000", "--out", "mine"},
-                             scratch.path());
+  const auto sweep =
+      run_ffp({"sweep", file.string(), "--set", "material.E_kPa=1000,2000", "--out", "mine"}, scratch.path());
   CHECK(sweep.exit_code == 2);
   CHECK(sweep.err.find("--out") != std::string::npos);
   CHECK(read_text(scratch.path() / "mine" / "notes.txt") == "field notes");
@@ -180,8 +182,8 @@ TEST_CASE("SIGKILL during a run leaves no finished-looking folder and a rerun co
 TEST_CASE("SIGKILL during a sweep stops its runs, leaves no finished-looking run, and a rerun completes", "[cli]") {
   Scratch scratch;
   const auto slow = scratch.write_json("slow.json", slow_point_scene());
-  const pid_t sweep = start_ffp({"sweep", slow.string(), "--set", "material.E_kPa=1000,2000", "--out", "sw"},
-                                scratch.path());
+  const pid_t sweep =
+      start_ffp({"sweep", slow.string(), "--set", "material.E_kPa=1000,2000", "--out", "sw"}, scratch.path());
   REQUIRE(wait_for_entry(scratch.path() / "sw", ".tmp-"));
   kill_hard(sweep);
   // The runs the sweep started see it die (SIGTERM) and remove their temporary folders.
@@ -191,8 +193,8 @@ TEST_CASE("SIGKILL during a sweep stops its runs, leaves no finished-looking run
     if (entry.is_directory()) CHECK_FALSE(fs::exists(entry.path() / "summary.json"));
   // The same sweep, now quick, completes into the same folder.
   const auto good = scratch.write_json("slow.json", good_point_scene());
-  const auto rerun = run_ffp({"sweep", good.string(), "--set", "material.E_kPa=1000,2000", "--out", "sw"},
-                             scratch.path());
+  const auto rerun =
+      run_ffp({"sweep", good.string(), "--set", "material.E_kPa=1000,2000", "--out", "sw"}, scratch.path());
   INFO(rerun.err);
   CHECK(rerun.exit_code == 0);
   CHECK(lines(read_text(scratch.path() / "sw" / "sweep.csv")) == 3);
@@ -211,9 +213,9 @@ void copy_calibration_scenes(const fs::path& root) {
     fs::copy_file(source / "lab" / curve, root / "lab" / curve);
 }
 
-const std::vector<std::string> kCalibrationReport = {"report", "--scenes", "data/scenes", "--only",
-                                                     "Calibration of the softening", "--cache", "cache",
-                                                     "--out", "rep", "--jobs", "2"};
+const std::vector<std::string> kCalibrationReport = {
+    "report", "--scenes", "data/scenes", "--only", "Calibration of the softening", "--cache", "cache",
+    "--out",  "rep",      "--jobs",      "2"};
 
 }  // namespace
 
@@ -232,8 +234,7 @@ TEST_CASE("a failing run does not sink the report: it is marked failed and the r
   CHECK(report.find("D_r = 15 %") != std::string::npos);  // the other runs' rows are there
 }
 
-TEST_CASE("SIGKILL during a report leaves no report, no finished-looking cache entry, and a rerun completes",
-          "[cli]") {
+TEST_CASE("SIGKILL during a report leaves no report, no finished-looking cache entry, and a rerun completes", "[cli]") {
   Scratch scratch;
   copy_calibration_scenes(scratch.path() / "data");
   const std::string real = read_text(scratch.path() / "data" / "scenes" / "calibration_dr00.json");

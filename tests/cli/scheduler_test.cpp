@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kSweep = {"--set", "mesh.min_cell_m=0.02", "--set", "material.E_kPa=1000,2500,5000",
+const std::vector<std::string> kSweep = {"--set", "mesh.min_cell_m=0.02",   "--set", "material.E_kPa=1000,2500,5000",
                                          "--set", "contact.delta_deg=15,25"};
 
 std::string reference_scene() { return std::string(FFP_SOURCE_DIR) + "/data/scenes/ffp_reference.json"; }
@@ -103,10 +103,9 @@ TEST_CASE("a case that fails is listed with its error and a rerun of run_case.sh
   Scratch scratch;
   const fs::path dir = scratch.path() / "cases";
   // 200 m/s goes through the 0.4 m chamber: that run ends with exit 1 and says why.
-  const CommandResult emitted =
-      run_ffp({"sweep", reference_scene(), "--set", "mesh.min_cell_m=0.02", "--set", "ffp.impact_velocity_m_s=5.6,200",
-               "--emit", dir.string()},
-              scratch.path());
+  const CommandResult emitted = run_ffp({"sweep", reference_scene(), "--set", "mesh.min_cell_m=0.02", "--set",
+                                         "ffp.impact_velocity_m_s=5.6,200", "--emit", dir.string()},
+                                        scratch.path());
   REQUIRE(emitted.exit_code == 0);
   CHECK(shell("OMP_NUM_THREADS=1 bash " + (dir / "run_case.sh").string() + " 0 > /dev/null 2>&1") == 0);
   CHECK(shell("OMP_NUM_THREADS=1 bash " + (dir / "run_case.sh").string() + " 1 > /dev/null 2>&1") != 0);
@@ -137,7 +136,8 @@ TEST_CASE("GNU parallel runs the emitted cases and collect gives the local sweep
   const CommandResult collected = run_ffp({"collect", dir.string()}, scratch.path());
   INFO(collected.err);
   REQUIRE(collected.exit_code == 0);
-  const CommandResult local = run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
+  const CommandResult local =
+      run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
   REQUIRE(local.exit_code == 0);
   same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(dir / "sweep.csv"));
 }
@@ -145,8 +145,9 @@ TEST_CASE("GNU parallel runs the emitted cases and collect gives the local sweep
 TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected table equals the local one",
           "[cli][scheduler][slurm]") {
   if (!slurm_cluster_up()) {
-    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
-         "scripts/slurm_local.sh start says why it cannot start)");
+    WARN(
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
   Scratch scratch;
@@ -156,7 +157,8 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
   REQUIRE(slurm.exit_code == 0);
   CHECK(slurm.err.find("Slurm job") != std::string::npos);
   CHECK(fs::exists(scratch.path() / "slurm" / "logs" / "case_0005.exit"));
-  const CommandResult local = run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
+  const CommandResult local =
+      run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
   REQUIRE(local.exit_code == 0);
   same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(scratch.path() / "slurm" / "sweep.csv"));
 }
@@ -164,15 +166,22 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
 TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array and reads them back",
           "[cli][scheduler][slurm]") {
   if (!slurm_cluster_up()) {
-    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
-         "scripts/slurm_local.sh start says why it cannot start)");
+    WARN(
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
   Scratch scratch;
   const std::string scenes = std::string(FFP_SOURCE_DIR) + "/data/scenes";
   auto report = [&](const std::string& name, std::vector<std::string> extra) {
-    std::vector<std::string> args = {"report", "--scenes", scenes, "--only", "Constitutive integration", "--out",
-                                     (scratch.path() / name / "report").string(), "--cache",
+    std::vector<std::string> args = {"report",
+                                     "--scenes",
+                                     scenes,
+                                     "--only",
+                                     "Constitutive integration",
+                                     "--out",
+                                     (scratch.path() / name / "report").string(),
+                                     "--cache",
                                      (scratch.path() / name / "cache").string()};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_ffp(args, scratch.path());
@@ -191,8 +200,9 @@ TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array
 TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job array and fits as a local one",
           "[cli][scheduler][slurm][inverse]") {
   if (!slurm_cluster_up()) {
-    WARN("skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
-         "scripts/slurm_local.sh start says why it cannot start)");
+    WARN(
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
   Scratch scratch;

@@ -13,7 +13,8 @@ namespace {
 constexpr double g = 9.81;
 
 /// A record sampled every dt: `fall` samples of free fall (−1 g) from rest, then a constant net deceleration.
-void constant_pulse(double dt, int fall, int pulse, double deceleration_g, std::vector<double>& t, std::vector<double>& d) {
+void constant_pulse(double dt, int fall, int pulse, double deceleration_g, std::vector<double>& t,
+                    std::vector<double>& d) {
   for (int k = 0; k < fall + pulse; ++k) {
     t.push_back(0.1 + k * dt);
     d.push_back(k < fall ? -1.0 : deceleration_g);

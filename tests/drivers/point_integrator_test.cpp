@@ -10,7 +10,6 @@ using namespace ffp;
 
 namespace {
 
-
 double n_phi(double phi_deg) {
   const double s = std::sin(phi_deg * kDegree);
   return (1 + s) / (1 - s);

@@ -35,8 +35,8 @@ json mc_triaxial() {
 
 json ssmc_triaxial() {
   json scene = mc_triaxial();
-  scene["material"] = {{"model", "ssmc"},         {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 60},
-                       {"phi_residual_deg", 32}, {"eta", 8}};
+  scene["material"] = {{"model", "ssmc"},    {"E_kPa", 2500},          {"nu", 0.33},
+                       {"phi_peak_deg", 60}, {"phi_residual_deg", 32}, {"eta", 8}};
   return scene;
 }
 
@@ -61,7 +61,7 @@ TEST_CASE("point reader: a triaxial compression path starts at the cell pressure
   CHECK(s.path_type == "triaxial_compression");
   const PointConfig& c = s.config;
   CHECK(c.law.index() == make_law(s.material.parameters).index());
-  CHECK(c.initial_state.index() == c.law.index());  // the law's virgin state
+  CHECK(c.initial_state.index() == c.law.index());                 // the law's virgin state
   for (int i = 0; i < 3; ++i) CHECK(c.initial_stress[i] == -5e3);  // compression positive kPa → tension positive Pa
   for (int i = 3; i < 6; ++i) CHECK(c.initial_stress[i] == 0.0);
   REQUIRE(c.segments.size() == 1);

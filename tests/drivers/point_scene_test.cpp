@@ -9,8 +9,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/scratch.hpp"
 #include "models/math_constants.hpp"
+#include "tests/support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -111,18 +111,17 @@ TEST_CASE("point scene: bad input names the key and exits with 2", "[point][scen
 TEST_CASE("point scene: a failed step writes a scene that repeats it", "[point][scene]") {
   ScratchDirectory dir;
   // Axial stress beyond the strength under stress control: no stress state can follow.
-  const json scene = {
-      {"kind", "point"},
-      {"name", "too_strong"},
-      {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 39}}},
-      {"initial_pressure_kPa", 1.72},
-      {"newton", {{"max_iterations", 8}}},
-      {"path",
-       {{"type", "general"},
-        {"segments",
-         {{{"control", {"stress", "stress", "stress", "strain", "strain", "strain"}},
-           {"target", {1.72, 20, 1.72, 0, 0, 0}},
-           {"increments", 50}}}}}}};
+  const json scene = {{"kind", "point"},
+                      {"name", "too_strong"},
+                      {"material", {{"model", "mohr_coulomb"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 39}}},
+                      {"initial_pressure_kPa", 1.72},
+                      {"newton", {{"max_iterations", 8}}},
+                      {"path",
+                       {{"type", "general"},
+                        {"segments",
+                         {{{"control", {"stress", "stress", "stress", "strain", "strain", "strain"}},
+                           {"target", {1.72, 20, 1.72, 0, 0, 0}},
+                           {"increments", 50}}}}}}};
   dir.write("scene.json", scene.dump());
   REQUIRE(run_ffp(dir, "scene.json") == 1);
   REQUIRE(fs::exists(dir.path / "failed-step.json"));

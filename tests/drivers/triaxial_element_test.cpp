@@ -12,7 +12,6 @@ using namespace ffp;
 
 namespace {
 
-
 double n_phi(double phi_deg) {
   const double s = std::sin(phi_deg * kDegree);
   return (1 + s) / (1 - s);
@@ -66,8 +65,10 @@ TEST_CASE("triaxial element test: Mohr-Coulomb peak equals σ3(Nφ−1), reached
   }
 }
 
-TEST_CASE("force–displacement area of elastic–perfectly plastic MC equals the closed form less the trapezoid's deficit at the kink",
-          "[triaxial][mc][work]") {
+TEST_CASE(
+    "force–displacement area of elastic–perfectly plastic MC equals the closed form less the trapezoid's deficit at "
+    "the kink",
+    "[triaxial][mc][work]") {
   // F(δ) is piecewise linear: slope E·A/H up to q_f·A at δ_y = H q_f/E, then flat.
   // W_exact = V [q_f²/(2E) + q_f (ε_max − q_f/E)]. The trapezoid on the increments
   // is exact on both straight parts; in the increment [a, a + h] holding the kink
@@ -121,8 +122,7 @@ TEST_CASE("piston work equals plastic work + stored elastic energy − cell pres
     CHECK(std::abs(r.plastic_work_J_total) <= 1e-12 * r.dissipated_work_J_total);
     CHECK(r.dissipated_work_J_total == Approx(r.elastic_energy_change_J - r.cell_work_J).epsilon(1e-9));
     // Drained elastic triaxial: W = V E ε²/2 for q = E ε_a.
-    CHECK(r.dissipated_work_J_total == Approx(0.5 * 2.5e6 * 1e-4 * 0.15 * kPi * 0.035 * 0.035)
-                                           .epsilon(1e-9));
+    CHECK(r.dissipated_work_J_total == Approx(0.5 * 2.5e6 * 1e-4 * 0.15 * kPi * 0.035 * 0.035).epsilon(1e-9));
   }
 }
 
@@ -141,7 +141,8 @@ TEST_CASE("SSMC element test: the peak tends to σ3(Nφp−1) from below as Δε
   const TriaxialResult& r = coarse;
   // exp(−50 κ) with κ of order ε_a = 0.3: the residual friction to ~1e-6.
   CHECK(r.residual_q_Pa == Approx(1.72e3 * (n_phi(32) - 1)).epsilon(1e-5));
-  for (std::size_t i = 1; i < r.dissipated_work_J.size(); ++i) REQUIRE(r.dissipated_work_J[i] > r.dissipated_work_J[i - 1]);
+  for (std::size_t i = 1; i < r.dissipated_work_J.size(); ++i)
+    REQUIRE(r.dissipated_work_J[i] > r.dissipated_work_J[i - 1]);
 }
 
 TEST_CASE("area_under is the exact area of the polyline, cut by interpolation at the ends", "[triaxial][work]") {

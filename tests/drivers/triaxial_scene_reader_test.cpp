@@ -25,10 +25,10 @@ TriaxialScene read(const json& scene) {
 }
 
 json ssmc_scene() {
-  return {{"kind", "triaxial"},
-          {"material",
-           {{"model", "ssmc"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 60}, {"phi_residual_deg", 32},
-            {"eta", 8}}}};
+  return {
+      {"kind", "triaxial"},
+      {"material",
+       {{"model", "ssmc"}, {"E_kPa", 2500}, {"nu", 0.33}, {"phi_peak_deg", 60}, {"phi_residual_deg", 32}, {"eta", 8}}}};
 }
 
 std::string refusal(const json& scene) {

@@ -11,8 +11,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/scratch.hpp"
 #include "models/math_constants.hpp"
+#include "tests/support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -24,8 +24,8 @@ struct Scratch : ffp::test_support::Scratch {
   Scratch() : ffp::test_support::Scratch("ffp-triaxial") {}
 };
 
-using ffp::test_support::run_ffp;
 using ffp::test_support::read_text;
+using ffp::test_support::run_ffp;
 
 double n_phi(double phi_deg) {
   const double s = std::sin(phi_deg * ffp::kDegree);
@@ -88,7 +88,8 @@ TEST_CASE("triaxial scene: the paper's SSMC softens from the peak and the output
   CHECK(std::count(history.begin(), history.end(), '\n') == 22);
 }
 
-TEST_CASE("integration_error scene: a Bolton material is refused, its MC comparison would drop ψ", "[integration][scene]") {
+TEST_CASE("integration_error scene: a Bolton material is refused, its MC comparison would drop ψ",
+          "[integration][scene]") {
   Scratch dir;
   std::ifstream in(kScenes + "integration_error.json");
   json scene = json::parse(in);

@@ -5,14 +5,14 @@
 
 #include <cmath>
 
-#include "mpm/contact_law.hpp"
 #include "models/math_constants.hpp"
+#include "mpm/contact_law.hpp"
 
+using ffp::kDegree;
+using ffp::kPi;
 using ffp::mpm::contact_velocity;
 using ffp::mpm::ContactLaw;
 using ffp::mpm::Vector2;
-using ffp::kDegree;
-using ffp::kPi;
 
 namespace {
 constexpr double kExact = 1e-14;  // a handful of flops: round-off only
@@ -60,7 +60,8 @@ TEST_CASE("contact: inside the friction cone the body sticks (Coulomb)", "[ffp][
   const Vector2 surface{0.0, -5.6};
   const double normal = -2.0;
   for (double tangential : {0.0, 0.5 * kMu * 2.0, 0.999 * kMu * 2.0, -0.9 * kMu * 2.0}) {
-    const Vector2 after = contact_velocity(combine(normal, tangential, surface), surface, kNormal, ContactLaw{kMu, false, 1.0});
+    const Vector2 after =
+        contact_velocity(combine(normal, tangential, surface), surface, kNormal, ContactLaw{kMu, false, 1.0});
     CHECK(after.r == Approx(surface.r).margin(kExact));
     CHECK(after.z == Approx(surface.z).epsilon(kExact));
   }

@@ -7,15 +7,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/math_constants.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/ffp_model.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
-
 
 FfpDescription coarse(std::optional<double> modulus_Pa) {
   FfpDescription d;
@@ -69,7 +68,8 @@ TEST_CASE("elastic FFP: the soil gains exactly the momentum the FFP's particles 
   const double ffp0 = measure_body(s, 1).momentum_z_N_s;
   while (s.time_s < 0.002) run.advance();
   const double soil = measure_body(s, 0).momentum_z_N_s, ffp = measure_body(s, 1).momentum_z_N_s;
-  INFO("FFP momentum change " << ffp - ffp0 << " N s, soil momentum " << soil << " N s, ∫R dt " << run.state().impulse_N_s);
+  INFO("FFP momentum change " << ffp - ffp0 << " N s, soil momentum " << soil << " N s, ∫R dt "
+                              << run.state().impulse_N_s);
   REQUIRE(ffp - ffp0 > 0.1);  // a real exchange
   CHECK(soil == Approx(-(ffp - ffp0)).epsilon(1e-5));
   // The reported reaction is that exchange (exact: the FFP's own forces sum to zero).

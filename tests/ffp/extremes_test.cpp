@@ -41,9 +41,17 @@ TEST_CASE("extreme sand and impacts end in a finite physical run or a clear refu
     DYNAMIC_SECTION(c.name) {
       ScratchDir scratch;
       const auto out = scratch.path() / "run";
-      std::vector<std::string> args = {"run", scene_path(c.scene), "--out", out.string(), "--quiet",
-                                       "--set", "mesh.min_cell_m=0.02", "--set", "output.field_times_s=[]",
-                                       "--set", "end_time_s=" + std::to_string(c.end_time_s)};
+      std::vector<std::string> args = {"run",
+                                       scene_path(c.scene),
+                                       "--out",
+                                       out.string(),
+                                       "--quiet",
+                                       "--set",
+                                       "mesh.min_cell_m=0.02",
+                                       "--set",
+                                       "output.field_times_s=[]",
+                                       "--set",
+                                       "end_time_s=" + std::to_string(c.end_time_s)};
       for (const auto& o : c.overrides) {
         args.push_back("--set");
         args.push_back(o);

@@ -24,8 +24,8 @@ TEST_CASE("reference FFP on 2 cm: M (v0 - v(t)) equals the integral of (R - M g)
           "[ffp][program][momentum]") {
   ScratchDir scratch;
   const auto out = scratch.path() / "run";
-  const ProgramResult r = run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
-                                       "mesh.min_cell_m=0.02", "--set", "output.field_times_s=[]"},
+  const ProgramResult r = run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet",
+                                       "--set", "mesh.min_cell_m=0.02", "--set", "output.field_times_s=[]"},
                                       scratch.path());
   REQUIRE(r.exit_code == 0);
   const CsvData h = read_numeric_csv(out / "history.csv");
@@ -55,7 +55,8 @@ TEST_CASE("reference FFP on 2 cm: M (v0 - v(t)) equals the integral of (R - M g)
   CHECK(std::abs(v.back()) < 0.05 * v0);
 }
 
-TEST_CASE("reference FFP on 2 cm: no soil particle ends up deeper inside the FFP than a cell", "[ffp][program][intrusion]") {
+TEST_CASE("reference FFP on 2 cm: no soil particle ends up deeper inside the FFP than a cell",
+          "[ffp][program][intrusion]") {
   // Contact acts at the nodes of the penetrometer: a particle near the surface
   // moves with a blend of corrected and free nodes and lags behind the surface
   // until enough of its support is corrected. Once it is a full cell deep every
@@ -80,8 +81,10 @@ TEST_CASE("reference FFP on 2 cm: no soil particle ends up deeper inside the FFP
   CHECK(summary["wall_clamps"].get<long>() == 0);
 }
 
-TEST_CASE("reference FFP on 2 cm and 1 cm: no soil particle deeper inside than a quarter cell (contact.project_particles by default)",
-          "[ffp][program][intrusion][projection]") {
+TEST_CASE(
+    "reference FFP on 2 cm and 1 cm: no soil particle deeper inside than a quarter cell (contact.project_particles by "
+    "default)",
+    "[ffp][program][intrusion][projection]") {
   // Issue 13: without the projection the deepest particle creeps in while the sand slides up
   // the cone's upper flank (0.07 cells at 2 cm, 0.14 at 1 cm by 0.04 s, 0.34 and 0.41 at 0.5 and
   // 0.25 cm by the end). With it every particle found inside after a step is put back onto the
@@ -91,10 +94,10 @@ TEST_CASE("reference FFP on 2 cm and 1 cm: no soil particle deeper inside than a
   for (const char* h : {"0.02", "0.01"}) {
     ScratchDir scratch;
     const auto out = scratch.path() / "run";
-    REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
-                         std::string("mesh.min_cell_m=") + h, "--set", "end_time_s=0.04", "--set",
-                         "output.field_times_s=[]"},
-                        scratch.path())
+    REQUIRE(run_program(
+                {"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                 std::string("mesh.min_cell_m=") + h, "--set", "end_time_s=0.04", "--set", "output.field_times_s=[]"},
+                scratch.path())
                 .exit_code == 0);
     const nlohmann::json summary = read_json(out / "summary.json");
     INFO("h = " << h << " m: deepest soil particle inside the outline " << summary["max_soil_intrusion_m"]
@@ -112,10 +115,11 @@ TEST_CASE("reference FFP on 2 cm and 1 cm: no soil particle deeper inside than a
   // The control: without the projection the same 1 cm run leaves sand 0.14 cells inside (measured).
   ScratchDir scratch;
   const auto out = scratch.path() / "run";
-  REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
-                       "end_time_s=0.04", "--set", "contact.project_particles=false", "--set", "output.field_times_s=[]"},
-                      scratch.path())
-              .exit_code == 0);
+  REQUIRE(
+      run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                   "end_time_s=0.04", "--set", "contact.project_particles=false", "--set", "output.field_times_s=[]"},
+                  scratch.path())
+          .exit_code == 0);
   CHECK(read_json(out / "summary.json")["max_soil_intrusion_cells"].get<double>() > 0.1);
 }
 
@@ -126,8 +130,8 @@ TEST_CASE("FFP at rest on 2 cm: the reaction equals its weight (75.6 N) within 5
   ScratchDir scratch;
   const auto out = scratch.path() / "run";
   REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
-                       "mesh.min_cell_m=0.02", "--set", "end_time_s=0.4", "--set", "ffp.impact_velocity_m_s=1.0", "--set",
-                       "output.field_times_s=[]"},
+                       "mesh.min_cell_m=0.02", "--set", "end_time_s=0.4", "--set", "ffp.impact_velocity_m_s=1.0",
+                       "--set", "output.field_times_s=[]"},
                       scratch.path())
               .exit_code == 0);
   const CsvData h = read_numeric_csv(out / "history.csv");
@@ -152,9 +156,10 @@ TEST_CASE("CPT: the static reaction F_0 pushed at 0.25 and at 0.125 m/s agrees w
   // 0.0625 m/s): 75.3, 70.5 and 68.5 N.
   ScratchDir scratch;
   auto run = [&](const std::string& scene, const std::string& out) {
-    REQUIRE(run_program({"run", scene_path(scene), "--out", (scratch.path() / out).string(), "--quiet", "--set",
-                         "end_depth_m=0.08", "--set", "output.field_times_s=[]", "--set", "output.history_interval_s=0.001"},
-                        scratch.path())
+    REQUIRE(run_program(
+                {"run", scene_path(scene), "--out", (scratch.path() / out).string(), "--quiet", "--set",
+                 "end_depth_m=0.08", "--set", "output.field_times_s=[]", "--set", "output.history_interval_s=0.001"},
+                scratch.path())
                 .exit_code == 0);
     return read_numeric_csv(scratch.path() / out / "history.csv");
   };

@@ -162,14 +162,16 @@ TEST_CASE("soil.near_spacing_m is a length that replaces particles_per_cell_near
   const ProgramResult by_length = check(s);
   const ProgramResult by_count = check(reference());
   REQUIRE(by_length.exit_code == 0);
-  auto particles = [](const std::string& out) { return out.substr(out.find("particles:"), out.find('\n', out.find("particles:")) - out.find("particles:")); };
+  auto particles = [](const std::string& out) {
+    return out.substr(out.find("particles:"), out.find('\n', out.find("particles:")) - out.find("particles:"));
+  };
   CHECK(particles(by_length.out) == particles(by_count.out));
 }
 
 TEST_CASE("an override to null removes the key so that its default applies", "[ffp][scene]") {
   ScratchDir scratch;
-  const ProgramResult r = run_program({"check", scene_path("ffp_reference.json"), "--set", "soil.particles_per_cell_near=null",
-                                       "--set", "soil.near_spacing_m=0.0022"},
+  const ProgramResult r = run_program({"check", scene_path("ffp_reference.json"), "--set",
+                                       "soil.particles_per_cell_near=null", "--set", "soil.near_spacing_m=0.0022"},
                                       scratch.path());
   INFO(r.err);
   CHECK(r.exit_code == 0);

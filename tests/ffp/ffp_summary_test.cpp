@@ -111,11 +111,11 @@ TEST_CASE("under a constant reaction the figures are those of constant decelerat
   const std::vector<FfpSample> s = constant_reaction_drop(2.0, 10.0, 3.0, 60.0, 129);
   const double t_end = 0.125;
   const FfpFigures f = ffp_figures(s, {2.0, 20.0, 3.0, t_end, 0.21875});
-  CHECK(f.peak_deceleration_g == 2.0);          // every row after the first, exactly
+  CHECK(f.peak_deceleration_g == 2.0);              // every row after the first, exactly
   CHECK(f.time_of_peak_s == std::ldexp(1.0, -10));  // the first of them
   CHECK(f.peak_deceleration_2ms_g == Approx(2.0).epsilon(1e-12));
-  CHECK(f.final_velocity_m_s == 0.5);           // 3 − 20·0.125
-  CHECK(f.final_penetration_m == 0.21875);      // 3·0.125 − 10·0.125²
+  CHECK(f.final_velocity_m_s == 0.5);       // 3 − 20·0.125
+  CHECK(f.final_penetration_m == 0.21875);  // 3·0.125 − 10·0.125²
   CHECK(f.rebound_m == 0.0);
   // Window min(10 ms, 12.5 ms): from the last row at or before 0.115 s, row 117 (0.11426 s).
   CHECK(f.final_reaction_window_s == 11 * std::ldexp(1.0, -10));
@@ -138,9 +138,10 @@ TEST_CASE("a body at rest at the end carries its weight with no inertia in the f
   // Rows every 1/128 s to 1/16 s, W = 10 N: the last row rests, R = W. The window, 6.25 ms
   // (a tenth of the run), starts from row 7 at 0.0546875 s.
   const double dt = 1.0 / 128;
-  const std::vector<FfpSample> s =
-      samples_of({0, dt, 2 * dt, 3 * dt, 4 * dt, 5 * dt, 6 * dt, 7 * dt, 8 * dt}, {0, 0, 0.5, 0.75, 0.875, 0.9, 0.95, 1.0, 1.078125},
-                 {0, 0.05, 0.125, 0.25, 0.25, 0.21875, 0.1875, 0.1875, 0.1875}, {2, 2, 1, 0, -0.5, -0.25, 0, 0, 0}, 10.0);
+  const std::vector<FfpSample> s = samples_of({0, dt, 2 * dt, 3 * dt, 4 * dt, 5 * dt, 6 * dt, 7 * dt, 8 * dt},
+                                              {0, 0, 0.5, 0.75, 0.875, 0.9, 0.95, 1.0, 1.078125},
+                                              {0, 0.05, 0.125, 0.25, 0.25, 0.21875, 0.1875, 0.1875, 0.1875},
+                                              {2, 2, 1, 0, -0.5, -0.25, 0, 0, 0}, 10.0);
   const FfpFigures f = ffp_figures(s, {1.0, 10.0, 2.0, 0.0625, 0.25});
   CHECK(f.final_reaction_window_s == dt);
   CHECK(f.final_reaction_N == 10.0);

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/math_constants.hpp"
 #include "mpm/ffp_model.hpp"
 #include "mpm/moving_mesh.hpp"
 #include "mpm/simulation.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
@@ -116,8 +116,8 @@ TEST_CASE("FFP sand: the near zone keeps its particle spacing in the taller comp
   auto count_in_cell = [&](int i, int j) {
     int n = 0;
     for (std::size_t p = 0; p < s.particles.size(); ++p)
-      if (s.particles.r[p] > g.r_nodes_m[i] && s.particles.r[p] < g.r_nodes_m[i + 1] && s.particles.z[p] > g.z_nodes_m[j] &&
-          s.particles.z[p] < g.z_nodes_m[j + 1])
+      if (s.particles.r[p] > g.r_nodes_m[i] && s.particles.r[p] < g.r_nodes_m[i + 1] &&
+          s.particles.z[p] > g.z_nodes_m[j] && s.particles.z[p] < g.z_nodes_m[j + 1])
         ++n;
     return n;
   };

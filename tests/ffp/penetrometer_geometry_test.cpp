@@ -4,16 +4,16 @@
 
 #include <cmath>
 
-#include "mpm/penetrometer_geometry.hpp"
 #include "models/math_constants.hpp"
+#include "mpm/penetrometer_geometry.hpp"
 
+using ffp::kPi;
 using ffp::mpm::PenetrometerGeometry;
 using ffp::mpm::PenetrometerShape;
-using ffp::kPi;
 
 namespace {
 PenetrometerShape blue_drop() { return PenetrometerShape{}; }  // 60° cone, R = 4.375 cm
-constexpr double kTight = 1e-12;  // pure geometry: round-off only
+constexpr double kTight = 1e-12;                               // pure geometry: round-off only
 }  // namespace
 
 TEST_CASE("the 60° cone of radius 4.375 cm is 7.58 cm high (paper: about 7.55 cm)", "[ffp][geometry]") {
@@ -40,7 +40,8 @@ TEST_CASE("a point off the cone flank has the flank's outward normal", "[ffp][ge
   CHECK(q.normal_r == Approx(std::cos(half)).epsilon(1e-9));
   CHECK(q.normal_z == Approx(-std::sin(half)).epsilon(1e-9));
   // The same distance inside is negative.
-  const auto inside = g.query(s * std::sin(half) - offset * std::cos(half), s * std::cos(half) + offset * std::sin(half) + 0.2, 0.2);
+  const auto inside =
+      g.query(s * std::sin(half) - offset * std::cos(half), s * std::cos(half) + offset * std::sin(half) + 0.2, 0.2);
   CHECK(inside.signed_distance_m == Approx(-offset).epsilon(1e-9));
 }
 
@@ -68,8 +69,7 @@ TEST_CASE("the rounded edge is a smooth arc between cone and body", "[ffp][geome
   // the sharp body and the body without the fillet's corner region.
   PenetrometerShape sharp = s;
   sharp.edge_radius_m = 0.0;
-  const double sharp_volume = kPi * s.base_radius_m * s.base_radius_m *
-                              (s.body_length_m + s.cone_height_m() / 3.0);
+  const double sharp_volume = kPi * s.base_radius_m * s.base_radius_m * (s.body_length_m + s.cone_height_m() / 3.0);
   CHECK(sharp.volume_m3() == Approx(sharp_volume).epsilon(1e-6));
   CHECK(s.volume_m3() < sharp_volume);
   CHECK(s.volume_m3() > 0.99 * sharp_volume);

@@ -21,9 +21,10 @@ constexpr double kEasonShieldRough = 6.05;
 double bearing_factor(const std::string& scene, double min_cell_m) {
   ScratchDir scratch;
   const auto out = scratch.path() / "run";
-  const ProgramResult r = run_program({"run", scene_path(scene), "--out", out.string(), "--quiet", "--set",
-                                       "mesh.min_cell_m=" + std::to_string(min_cell_m), "--set", "output.field_times_s=[]"},
-                                      scratch.path());
+  const ProgramResult r =
+      run_program({"run", scene_path(scene), "--out", out.string(), "--quiet", "--set",
+                   "mesh.min_cell_m=" + std::to_string(min_cell_m), "--set", "output.field_times_s=[]"},
+                  scratch.path());
   INFO(scene << " at " << min_cell_m << " m: " << r.err);
   REQUIRE(r.exit_code == 0);
   const nlohmann::json summary = read_json(out / "summary.json");

@@ -87,8 +87,8 @@ TEST_CASE("a block sliding on a rigid floor with delta = 20° decelerates at mu 
   const double deceleration = -slope(t, v);
   const double distance = mean_r().first - start_r;
   const double creep = mean_r().first - stopped_r;
-  INFO("deceleration " << deceleration << " m/s² (μg = " << a << "), slide " << distance << " m (v0²/2μg = "
-                       << v0 * v0 / (2 * a) << " m), creep after the stop " << creep << " m");
+  INFO("deceleration " << deceleration << " m/s² (μg = " << a << "), slide " << distance
+                       << " m (v0²/2μg = " << v0 * v0 / (2 * a) << " m), creep after the stop " << creep << " m");
   // 1 %: the analytic law is exact for a rigid block; this one is elastic and
   // rocks while the friction builds up (its bottom nodes share the weight
   // unevenly), and the hoop term costs 0.2 %. The fit averages ~100 rocking periods.
@@ -121,8 +121,8 @@ TEST_CASE("the soil gains exactly the momentum the rigid FFP loses (contact impu
   while (s.time_s < 0.002) run.advance();
   const double soil = measure_body(s, run.soil_body()).momentum_z_N_s;  // + up
   const double impulse = run.state().impulse_N_s;
-  INFO("∫R dt = " << impulse << " N s, soil momentum " << soil << " N s, M(v0 − v) = "
-                  << M * (v0 - run.velocity_down_m_s()) << " N s");
+  INFO("∫R dt = " << impulse << " N s, soil momentum " << soil
+                  << " N s, M(v0 − v) = " << M * (v0 - run.velocity_down_m_s()) << " N s");
   REQUIRE(impulse > 0.1);  // a real exchange (~1 % of the FFP's momentum)
   // The body: exact to round-off (its velocity is made from the impulse).
   CHECK(M * (v0 - run.velocity_down_m_s()) == Approx(impulse).epsilon(1e-10));
@@ -144,18 +144,21 @@ TEST_CASE("the particle projection moves soil particles only: velocities and str
   bool unchanged = true;
   s.stages.insert_before("project_soil_particles", {"record", [&](Simulation& sim) { before = sim.particles; }});
   s.stages.insert_after("project_soil_particles", {"compare", [&](Simulation& sim) {
-                          const Particles& P = sim.particles;
-                          for (std::size_t p = 0; p < P.size(); ++p) {
-                            unchanged = unchanged && P.vr[p] == before.vr[p] && P.vz[p] == before.vz[p] &&
-                                        P.mass[p] == before.mass[p] && P.volume[p] == before.volume[p] &&
-                                        P.stress[p] == before.stress[p];
-                            moved += P.r[p] != before.r[p] || P.z[p] != before.z[p];
-                          }
-                          steps_with_projection += run.state().projected_particles > 0;
-                          worst_inside = std::max(worst_inside, run.soil_intrusion_m());
-                        }});
+                                                     const Particles& P = sim.particles;
+                                                     for (std::size_t p = 0; p < P.size(); ++p) {
+                                                       unchanged = unchanged && P.vr[p] == before.vr[p] &&
+                                                                   P.vz[p] == before.vz[p] &&
+                                                                   P.mass[p] == before.mass[p] &&
+                                                                   P.volume[p] == before.volume[p] &&
+                                                                   P.stress[p] == before.stress[p];
+                                                       moved += P.r[p] != before.r[p] || P.z[p] != before.z[p];
+                                                     }
+                                                     steps_with_projection += run.state().projected_particles > 0;
+                                                     worst_inside = std::max(worst_inside, run.soil_intrusion_m());
+                                                   }});
   while (s.time_s < 0.03) run.advance();
-  INFO(steps_with_projection << " steps projected, " << moved << " particle moves, deepest after: " << worst_inside << " m");
+  INFO(steps_with_projection << " steps projected, " << moved << " particle moves, deepest after: " << worst_inside
+                             << " m");
   REQUIRE(steps_with_projection > 0);
   CHECK(moved > 0);
   CHECK(unchanged);

@@ -10,7 +10,8 @@
 
 using namespace ffp;
 
-TEST_CASE("at-rest K0: Jaky 1 − sin φ'_p is 0.384 for 38° (the paper's Table 1: 0.39) and an elastic body ν/(1 − ν)", "[models][k0]") {
+TEST_CASE("at-rest K0: Jaky 1 − sin φ'_p is 0.384 for 38° (the paper's Table 1: 0.39) and an elastic body ν/(1 − ν)",
+          "[models][k0]") {
   const double degree = kDegree;
   const ElasticConstants sand{2.5e6, 0.33};
   CHECK(at_rest_k0(MohrCoulombParameters{sand, 38.0 * degree, 0.0, 0.0}) == Approx(0.3843).margin(5e-5));

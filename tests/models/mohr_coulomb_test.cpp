@@ -5,16 +5,15 @@
 #include <catch2/catch.hpp>
 
 #include "models/elastic.hpp"
+#include "models/math_constants.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/principal_stress.hpp"
 #include "tensor_test_helpers.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::test;
 
 namespace {
-
 
 MohrCoulombParameters sand(double phi_deg = 39.0, double psi_deg = 5.0, double cohesion_Pa = 0.0, double nu = 0.33,
                            double E_Pa = 2.5e6) {
@@ -175,12 +174,14 @@ TEST_CASE("every plastic return is consistent: |f| ≤ 1e-10 of the stress scale
         region == ReturnRegion::edge_extension) {
       // Flow rule on plane and edges: Δε^p = Σ Δλ_k (1 + sin ψ on the major, −(1 − sin ψ) on the minor
       // axis of plane k), so (1 − sin ψ) Σ(e_i > 0) + (1 + sin ψ) Σ(e_i < 0) = 0 with Δλ_k ≥ 0.
-      const Eigen::Vector3d e = PrincipalStresses(plastic_strain(mc.parameters().elastic, increment, stress - start)).values();
+      const Eigen::Vector3d e =
+          PrincipalStresses(plastic_strain(mc.parameters().elastic, increment, stress - start)).values();
       const double sp = std::sin(mc.parameters().dilatancy_angle_rad);
       double dilatant = 0.0, compactive = 0.0;
       for (int i = 0; i < 3; ++i) (e[i] > 0.0 ? dilatant : compactive) += e[i];
       // Δε^p = Δε − CΔσ cancels O(1e-2) strains: 1e-10 of them is ~1e6 ulps of room.
-      CHECK(std::abs((1 - sp) * dilatant + (1 + sp) * compactive) <= 1e-10 * max_abs(increment) + 1e-13 * e.cwiseAbs().maxCoeff());
+      CHECK(std::abs((1 - sp) * dilatant + (1 + sp) * compactive) <=
+            1e-10 * max_abs(increment) + 1e-13 * e.cwiseAbs().maxCoeff());
       CHECK(e[0] > 0.0);
       CHECK(e[2] < 0.0);
     }
@@ -222,13 +223,21 @@ TEST_CASE("no NaN in a randomized sweep of 10^5 states × increments including t
     const MohrCoulomb mc(sand(phi, psi, cohesion, nus[(n / 30) % nus.size()], 1e6 + 1e8 * uniform(rng)));
     Voigt stress;
     switch (n % 4) {
-      case 0: stress = Voigt::Zero(); break;                                   // zero stress
-      case 1: stress = isotropic(-1e5 * uniform(rng)); break;                  // on the hydrostatic axis
-      case 2: stress = isotropic(-1e5 * uniform(rng)) + random_voigt(rng, 3e4); break;
-      default: stress = random_voigt(rng, 1e5); break;                         // anything, tension too
+      case 0:
+        stress = Voigt::Zero();
+        break;  // zero stress
+      case 1:
+        stress = isotropic(-1e5 * uniform(rng));
+        break;  // on the hydrostatic axis
+      case 2:
+        stress = isotropic(-1e5 * uniform(rng)) + random_voigt(rng, 3e4);
+        break;
+      default:
+        stress = random_voigt(rng, 1e5);
+        break;  // anything, tension too
     }
     if (n % 3 == 0) stress[4] = stress[5] = 0.0;
-    Voigt increment = random_voigt(rng, 0.1 * uniform(rng));  // single increments up to ~10 %
+    Voigt increment = random_voigt(rng, 0.1 * uniform(rng));     // single increments up to ~10 %
     if (n % 11 == 0) increment = isotropic(0.1 * uniform(rng));  // pure tension
     if (n % 13 == 0) increment = isotropic(-0.1 * uniform(rng));
     if (n % 3 == 0) increment[4] = increment[5] = 0.0;

@@ -5,16 +5,15 @@
 
 #include "models/bolton_dilatancy.hpp"
 #include "models/friction_rate_law.hpp"
+#include "models/math_constants.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"
 #include "tensor_test_helpers.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::test;
 
 namespace {
-
 
 /// The paper's sand (section 4.2, Table 1): E' = 2500 kPa, ν' = 0.33, φ'_p = 39°, φ'_c = 32°, ψ_p = 5°, η = 8.
 StrainSofteningParameters paper_sand() {
@@ -44,10 +43,10 @@ TEST_CASE("Bolton dilatancy index and peak dilatancy match table values, clampin
       {0.15, 1.72, 0.41865190, 7.15487},  // the paper's sand at σ3 = 1.72 kPa
       {0.00, 1.72, 0.0, 0.0},             // D_r = 0: I_R = −1 clamped to 0
       {0.15, 3.00, 0.33520817, 5.74470},
-      {0.50, 100.0, 1.69741490, 26.99},   // 0.5(10 − 4.60517) − 1
-      {1.00, 1.0, 4.0, 50.19443},         // 9 clamped to 4: tan ψ = 1.2
-      {0.10, 1e9, 0.0, 0.0},              // huge p': negative, clamped to 0
-      {0.15, 0.0, 4.0, 50.19443},         // no pressure: ln p' → −∞, clamped to 4
+      {0.50, 100.0, 1.69741490, 26.99},  // 0.5(10 − 4.60517) − 1
+      {1.00, 1.0, 4.0, 50.19443},        // 9 clamped to 4: tan ψ = 1.2
+      {0.10, 1e9, 0.0, 0.0},             // huge p': negative, clamped to 0
+      {0.15, 0.0, 4.0, 50.19443},        // no pressure: ln p' → −∞, clamped to 4
   };
   for (const Row& r : table) {
     CAPTURE(r.relative_density, r.p_kPa);

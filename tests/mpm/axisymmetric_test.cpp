@@ -4,15 +4,14 @@
 
 #include <cmath>
 
+#include "models/math_constants.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm_test_support.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
-
 
 /// A pressure ramped smoothly (half cosine) to p over `ramp`, then held.
 std::function<double(double)> ramp(double p, double duration) {

@@ -32,8 +32,7 @@ TEST_CASE("grid axis finds the cell of a coordinate on a graded, moving axis", "
   CHECK(axis.hat_integral(2, 0.0, 1.0) == Approx(0.5 * (0.05 + 0.4)));
 }
 
-TEST_CASE("shape functions: partition of unity, zero gradient sum, GIMP equals linear inside a cell",
-          "[mpm][shape]") {
+TEST_CASE("shape functions: partition of unity, zero gradient sum, GIMP equals linear inside a cell", "[mpm][shape]") {
   const GridAxis axis({0.0, 0.1, 0.25, 0.3, 0.5, 0.55});
   for (double x = 0.0; x <= 0.55; x += 0.00731) {
     const int c = axis.cell_of(x);
@@ -180,8 +179,9 @@ TEST_CASE("transfers: each particle moves with the nodal field its strain comes 
       largest = std::max(largest, std::hypot(ur, uz));
       remap_gap = std::max(remap_gap, gap);
     }
-    INFO((transfer == Transfer::usl ? "usl" : "musl_remapped") << ": largest step " << largest << " m, worst mismatch "
-                                                             << worst << " m, |v_new − ṽ|Δt up to " << remap_gap << " m");
+    INFO((transfer == Transfer::usl ? "usl" : "musl_remapped")
+         << ": largest step " << largest << " m, worst mismatch " << worst << " m, |v_new − ṽ|Δt up to " << remap_gap
+         << " m");
     REQUIRE(largest > 0.0);
     CHECK(worst <= 1e-12 * largest);
     if (transfer == Transfer::musl_remapped) CHECK(remap_gap > 1e-6 * largest);  // the two fields do differ

@@ -3,10 +3,10 @@
 
 #include <cmath>
 
+#include "models/math_constants.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm_test_support.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;

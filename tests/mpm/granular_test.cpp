@@ -4,11 +4,11 @@
 
 #include <cmath>
 
+#include "models/math_constants.hpp"
 #include "models/mohr_coulomb.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/stages.hpp"
 #include "mpm_test_support.hpp"
-#include "models/math_constants.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;

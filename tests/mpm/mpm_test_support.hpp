@@ -19,8 +19,8 @@ inline std::vector<double> nodes(double a, double b, int cells) {
 inline BodyDescription elastic_body(std::string name, double E_Pa, double nu, double density, Region region,
                                     double vr = 0.0, double vz = 0.0, int ppc = 2,
                                     std::optional<GeostaticStress> k0 = std::nullopt) {
-  return BodyDescription{std::move(name), LinearElastic(ElasticConstants{E_Pa, nu}), density, region, ppc, ppc,
-                         vr, vz, k0};
+  return BodyDescription{
+      std::move(name), LinearElastic(ElasticConstants{E_Pa, nu}), density, region, ppc, ppc, vr, vz, k0};
 }
 
 }  // namespace ffp::mpm::testing

@@ -105,7 +105,7 @@ TEST_CASE("very soft block (E = 1 kPa) collapsing under its own weight at Couran
       highest_kinetic = std::max(highest_kinetic, measure(s).kinetic_energy_J);
     }
   }());
-  INFO("highest kinetic energy " << highest_kinetic << " J against m g z₀ = " << released_bound << " J; "
-                                 << s.step << " steps, " << s.wall_clamps << " wall clamps");
+  INFO("highest kinetic energy " << highest_kinetic << " J against m g z₀ = " << released_bound << " J; " << s.step
+                                 << " steps, " << s.wall_clamps << " wall clamps");
   CHECK(highest_kinetic < released_bound);
 }

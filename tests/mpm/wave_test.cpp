@@ -15,9 +15,9 @@ using namespace ffp::mpm;
 namespace {
 
 struct Arrival {
-  double time_s;      ///< impulse-centroid arrival at the cell centre
-  double half_s;      ///< first time the cell's stress reaches half the plateau
-  double centre_m;    ///< initial height of the cell centre
+  double time_s;    ///< impulse-centroid arrival at the cell centre
+  double half_s;    ///< first time the cell's stress reaches half the plateau
+  double centre_m;  ///< initial height of the cell centre
 };
 
 /// Arrival times at the cells whose centres start at the given heights.
@@ -34,7 +34,8 @@ std::vector<Arrival> run_column(ShapeFunction shape, Transfer transfer, const st
   ModelDescription m;
   m.r_nodes_m = testing::nodes(0.0, 2 * h, 2);
   m.z_nodes_m = testing::nodes(0.0, H, static_cast<int>(std::lround(H / h)));
-  m.bodies.push_back(testing::elastic_body("column", e.youngs_modulus_Pa, e.poisson_ratio, rho, BoxRegion{0, 2 * h, 0, H}, 0.0, -v0));
+  m.bodies.push_back(
+      testing::elastic_body("column", e.youngs_modulus_Pa, e.poisson_ratio, rho, BoxRegion{0, 2 * h, 0, H}, 0.0, -v0));
   m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::free};
   m.solver.shape_function = shape;
   m.solver.transfer = transfer;

@@ -14,8 +14,8 @@
 #include "reports/run_pool.hpp"
 
 namespace fs = std::filesystem;
-using ffp::RunRequest;
 using ffp::run_key;
+using ffp::RunRequest;
 
 namespace {
 
@@ -42,7 +42,7 @@ TEST_CASE("run key: an override equal to the scene's value shares the plain run'
   const fs::path scene = s.write("t.json", kScene);
   const std::string plain = run_key({"a", scene, {}}, "v1");
   CHECK(run_key({"b", scene, {"material.E_kPa=2500"}}, "v1") == plain);
-  CHECK(run_key({"c", scene, {"material.E_kPa=2500.0"}}, "v1") == plain);  // 2500 and 2500.0 are one number
+  CHECK(run_key({"c", scene, {"material.E_kPa=2500.0"}}, "v1") == plain);    // 2500 and 2500.0 are one number
   CHECK(run_key({"d", scene, {"description=other words"}}, "v1") == plain);  // prose does not change a run
 }
 
