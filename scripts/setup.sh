@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
   catch2 libbenchmark-dev gnuplot-nox libcli11-dev
   clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
+  clang-format-14              # the layout check of the tests (.clang-format)
   slurm-wlm munge parallel     # sweeps on a scheduler: the one-node Slurm of the tests, GNU parallel
 )
 
