@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "drivers/app/record_output.hpp"
 #include "drivers/output/csv_writer.hpp"
