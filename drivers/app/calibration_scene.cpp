@@ -63,8 +63,7 @@ void read_mpm_specimen(SceneReader& specimen, MpmTriaxialConfig& m) {
 
 CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scene_dir) {
   CalibrationScene spec;
-  const std::string file = scene.text("lab_curve_csv");
-  spec.lab_file = (fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file).lexically_normal();
+  spec.lab_file = scene.file("lab_curve_csv", scene_dir);
   try {
     spec.lab = read_lab_curve(spec.lab_file);
   } catch (const SceneError& e) {

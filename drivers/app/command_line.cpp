@@ -24,7 +24,13 @@ Scene kinds: point, triaxial, calibration, integration_error, mpm, ffp, cpt, rec
 (see README.md).
 Exit codes: 0 done, 1 run failed, 2 bad input, 130 interrupted.)";
 
-const CLI::IsMember kSchedulers({"local", "slurm"});
+/// --scheduler local|slurm, where a command's runs go; `help` says what slurm does for it.
+void add_scheduler(CLI::App& command, bool& slurm, const std::string& help) {
+  command
+      .add_option_function<std::string>(
+          "--scheduler", [&slurm](const std::string& s) { slurm = s == "slurm"; }, help)
+      ->check(CLI::IsMember({"local", "slurm"}));
+}
 
 void add_scene(CLI::App& command, RunOptions& o) {
   command.add_option("SCENE", o.scene_file, "the scene file (JSON)")->required();
@@ -41,10 +47,7 @@ void add_run(CLI::App& app, RunOptions& o) {
   run.add_flag("--force", o.force, "replace an --out folder that holds files ffp did not write");
   run.add_option("--jobs", o.jobs, "an inverse fit's model runs at once (default one per core)")
       ->check(CLI::Range(1, 64));
-  run.add_option_function<std::string>(
-         "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
-         "where an inverse fit's model runs go: local (default) or slurm (job arrays)")
-      ->check(kSchedulers);
+  add_scheduler(run, o.slurm, "where an inverse fit's model runs go: local (default) or slurm (job arrays)");
 }
 
 void add_check(CLI::App& app, RunOptions& o) {
@@ -69,11 +72,7 @@ void add_sweep(CLI::App& app, SweepOptions& o) {
   sweep.add_option("--jobs", o.jobs, "runs side by side (default 1)")->check(CLI::Range(1, 256));
   sweep.add_option("--threads", o.threads, "OpenMP threads per case (default 1)")->check(CLI::Range(1, 256));
   sweep.add_flag("--force", o.force, "replace a folder that holds files ffp did not write");
-  sweep
-      .add_option_function<std::string>(
-          "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
-          "local (default) or slurm: submit the emitted job array with sbatch, wait, collect")
-      ->check(kSchedulers);
+  add_scheduler(sweep, o.slurm, "local (default) or slurm: submit the emitted job array with sbatch, wait, collect");
 }
 
 void add_collect(CLI::App& app, std::filesystem::path& folder) {
@@ -93,11 +92,7 @@ void add_report(CLI::App& app, ReportOptions& o) {
   report.add_option("--only", o.only, "only the studies whose title contains TEXT");
   report.add_option("--jobs", o.jobs, "runs side by side (default one per core)")->check(CLI::Range(1, 64));
   report.add_flag("--force", o.force, "replace a folder that holds files ffp did not write");
-  report
-      .add_option_function<std::string>(
-          "--scheduler", [&o](const std::string& s) { o.slurm = s == "slurm"; },
-          "local (default) or slurm: the uncached runs as Slurm job arrays")
-      ->check(kSchedulers);
+  add_scheduler(report, o.slurm, "local (default) or slurm: the uncached runs as Slurm job arrays");
 }
 
 void add_bench(CLI::App& app, BenchOptions& o) {

@@ -48,12 +48,7 @@ std::optional<ScalarTarget> read_target(SceneReader& scene, const char* key, con
 
 InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
   InverseScene out;
-  const std::string forward = scene.text("forward_scene");
-  out.forward_scene = (fs::path(forward).is_absolute() ? fs::path(forward) : scene_dir / forward).lexically_normal();
-  std::error_code error;
-  if (!fs::is_regular_file(out.forward_scene, error))
-    scene.fail("forward_scene",
-               "'" + out.forward_scene.string() + "' is not a file (paths are relative to the scene's folder)");
+  out.forward_scene = scene.existing_file("forward_scene", scene_dir);
   json forward_json;
   try {
     forward_json = load_scene_file(out.forward_scene.string());

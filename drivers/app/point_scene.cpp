@@ -83,9 +83,8 @@ std::vector<PathSegment> read_segments(SceneReader& path) {
 /// row is the target of one leg of `increments_per_row` increments.
 std::vector<PathSegment> read_table(SceneReader& path, const fs::path& scene_dir,
                                     std::optional<PathSpec::TableStart>& start) {
-  const std::string file = path.text("table_csv");
+  const fs::path resolved = path.file("table_csv", scene_dir);
   const int per_row = path.integer("increments_per_row", 1, 1'000'000, 1);
-  const fs::path resolved = fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file;
   const CsvData table = read_numeric_csv(resolved);
   const std::string where = path.path() + ".table_csv (" + resolved.string() + ")";
   if (!table.has("time_s")) throw SceneError(where + ": needs a column time_s");
@@ -194,6 +193,15 @@ void check_table_start(const PathSpec::TableStart& table, const Voigt& initial_s
 
 }  // namespace
 
+NewtonSettings read_newton_settings(SceneReader& scene) {
+  SceneReader newton = scene.object("newton");
+  NewtonSettings settings;
+  settings.max_iterations = newton.integer("max_iterations", 1, 1000, 25);
+  settings.relative_tolerance = newton.number("relative_tolerance", Range::closed(1e-15, 1e-2), 1e-10);
+  newton.finish("newton");
+  return settings;
+}
+
 PointScene read_point_scene(SceneReader& scene, const fs::path& scene_dir) {
   PointScene out;
   out.name = scene.text("name", "point");
@@ -222,10 +230,7 @@ PointScene read_point_scene(SceneReader& scene, const fs::path& scene_dir) {
 
   config.initial_state = read_initial_state(scene, config.law);
 
-  SceneReader newton = scene.object("newton");
-  config.newton.max_iterations = newton.integer("max_iterations", 1, 1000, 25);
-  config.newton.relative_tolerance = newton.number("relative_tolerance", Range::closed(1e-15, 1e-2), 1e-10);
-  newton.finish("newton");
+  config.newton = read_newton_settings(scene);
 
   long total = 0;
   for (const auto& s : config.segments) total += s.increments;

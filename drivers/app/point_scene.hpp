@@ -35,6 +35,9 @@ struct PointScene {
       path_type;  ///< isotropic | oedometric | triaxial_compression | triaxial_extension | simple_shear | general
 };
 
+/// The `newton` object of the element kinds (point, triaxial): {max_iterations, relative_tolerance}.
+NewtonSettings read_newton_settings(SceneReader& scene);
+
 /// Reads every key after kind and finish()es the scene; relative table_csv
 /// paths start at `scene_dir`. SceneError on bad input.
 PointScene read_point_scene(SceneReader& scene, const std::filesystem::path& scene_dir);

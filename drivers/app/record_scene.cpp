@@ -14,12 +14,7 @@ namespace fs = std::filesystem;
 RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
   RecordScene out;
   RecordSettings& s = out.settings;
-  const std::string file = scene.text("record_csv");
-  out.record_csv = (fs::path(file).is_absolute() ? fs::path(file) : scene_dir / file).lexically_normal();
-  std::error_code error;
-  if (!fs::is_regular_file(out.record_csv, error))
-    scene.fail("record_csv",
-               "'" + out.record_csv.string() + "' is not a file (paths are relative to the scene's folder)");
+  out.record_csv = scene.existing_file("record_csv", scene_dir);
   if (scene.has("sensor_range_g") && scene.has("sensor_range_m_s2"))
     scene.fail("sensor_range_m_s2", "give the full scale once, in the unit of the record's channel");
   if (scene.has("sensor_range_g")) out.sensor_range = scene.number("sensor_range_g", Range::positive(1e5, "g"));

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "drivers/app/point_scene.hpp"
+
 namespace ffp {
 
 namespace {
@@ -27,10 +29,7 @@ TriaxialScene read_triaxial_scene(SceneReader& scene) {
   config.specimen.height_m = specimen.number("height_m", Range::positive(100.0, "m"), 0.15);
   config.specimen.diameter_m = specimen.number("diameter_m", Range::positive(100.0, "m"), 0.07);
   specimen.finish("specimen (height_m, diameter_m)");
-  SceneReader newton = scene.object("newton");
-  config.newton.max_iterations = newton.integer("max_iterations", 1, 1000, 25);
-  config.newton.relative_tolerance = newton.number("relative_tolerance", Range::closed(1e-15, 1e-2), 1e-10);
-  newton.finish("newton");
+  config.newton = read_newton_settings(scene);
   // Histories beyond ~20,000 rows only slow the plots down.
   out.output_every =
       scene.integer("output_every_increments", 1, kMaxIncrements, std::max(1L, config.increments / 20000L));

@@ -198,6 +198,19 @@ std::string SceneReader::choice(std::string_view key, std::initializer_list<std:
   return choice(key, allowed);
 }
 
+std::filesystem::path SceneReader::file(std::string_view key, const std::filesystem::path& scene_dir) {
+  const std::filesystem::path named = text(key);
+  return (named.is_absolute() ? named : scene_dir / named).lexically_normal();
+}
+
+std::filesystem::path SceneReader::existing_file(std::string_view key, const std::filesystem::path& scene_dir) {
+  std::filesystem::path resolved = file(key, scene_dir);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(resolved, error))
+    fail(key, "'" + resolved.string() + "' is not a file (paths are relative to the scene's folder)");
+  return resolved;
+}
+
 std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_view key, const Range& range,
                                                                  std::size_t min_size, std::size_t max_size) {
   const json* v = find(key);

@@ -7,6 +7,7 @@
 /// a scene carries only what its kind and model use.
 #include <array>
 #include <cstddef>
+#include <filesystem>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -73,6 +74,10 @@ class SceneReader {
   bool boolean(std::string_view key, bool fallback);
   std::string text(std::string_view key);
   std::string text(std::string_view key, std::string_view fallback);
+  /// A file named by the text at `key`: relative to the scene's folder unless absolute, lexically normalised.
+  std::filesystem::path file(std::string_view key, const std::filesystem::path& scene_dir);
+  /// The same, refused unless it is a regular file (a FIFO or /dev/zero would hang its reader).
+  std::filesystem::path existing_file(std::string_view key, const std::filesystem::path& scene_dir);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed, std::string_view fallback);
   /// One of an enum's names (its EnumNames table); the echo holds the name.
