@@ -4,6 +4,8 @@ namespace ffp::mpm {
 
 void ParticleBins::configure(int cr, int cz) {
   axis = cr >= cz ? 0 : 1;
+  cells_r_ = cr;
+  cells_z_ = cz;
   const int cells = axis == 0 ? cr : cz;
   offsets.assign(static_cast<std::size_t>((cells + width - 1) / width) + 1, 0);
 }

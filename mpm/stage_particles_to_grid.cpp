@@ -44,7 +44,7 @@ void scatter_internal_forces(Simulation& s) {
     Voigt sig = P.stress[p];
     if (smoothed &&
         takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
-      const double shift = s.cell_mean_stress[w.cell * bodies + P.body[p]] - trace(sig) / 3.0;
+      const double shift = s.cell_mean_stress[s.cell[p] * bodies + P.body[p]] - trace(sig) / 3.0;
       sig[0] += shift;
       sig[1] += shift;
       sig[2] += shift;

@@ -10,6 +10,7 @@ void compute_shape_functions(Simulation& s) {
   const std::size_t n = p.size();
   s.weights.resize(n);
   s.strip.resize(n);
+  s.cell.resize(n);
   const bool gimp = s.settings.shape_function == ShapeFunction::gimp;
   const GridAxis& axis_r = s.grid.r;
   const GridAxis& axis_z = s.grid.z;
@@ -27,7 +28,6 @@ void compute_shape_functions(Simulation& s) {
     ShapeWeights& w = s.weights[i];
     w.node_r = wr.base;
     w.node_z = wz.base;
-    w.cell = static_cast<std::uint32_t>(s.grid.cell(cr, cz));
     for (int k = 0; k < 3; ++k) {
       w.wr[k] = wr.w[k];
       w.gr[k] = wr.g[k];
@@ -35,6 +35,7 @@ void compute_shape_functions(Simulation& s) {
       w.gz[k] = wz.g[k];
     }
     w.inverse_r = 1.0 / r;
+    s.cell[i] = static_cast<std::uint32_t>(s.grid.cell(cr, cz));
     s.strip[i] = s.bins.strip_of(cr, cz);
   }
   if (outside > 0) {
