@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mpm/parallel.hpp"
@@ -31,6 +32,19 @@ struct ParticleBins {
   std::uint32_t strip_of(int i, int j) const { return static_cast<std::uint32_t>((axis == 0 ? i : j) / width); }
   /// Counting sort of the particles by strip (stable: ascending within a strip).
   void build(std::span<const std::uint32_t> strip_of_particle);
+
+  /// The same sort in two halves, for a caller that counts the strips while it
+  /// computes them (one parallel pass fewer): begin_build(n), then for each chunk
+  /// t < chunks(), ++counts(t)[strip] over the particles of chunk_range(t, n)
+  /// (chunks may run in parallel), then finish_build(strips).
+  void begin_build(std::size_t n);
+  int chunks() const { return chunks_; }
+  std::pair<std::size_t, std::size_t> chunk_range(int t, std::size_t n) const {
+    const auto T = static_cast<std::size_t>(chunks_), k = static_cast<std::size_t>(t);
+    return {n * k / T, n * (k + 1) / T};
+  }
+  std::uint32_t* counts(int t) { return counts_.data() + static_cast<std::size_t>(t) * offsets.size(); }
+  void finish_build(std::span<const std::uint32_t> strip_of_particle);
 
   /// fn(p) for every particle, scatter-safe (see above).
   template <class Fn>
@@ -73,6 +87,7 @@ struct ParticleBins {
  private:
   std::vector<std::uint32_t> counts_;  ///< per (chunk, strip) during build
   int cells_r_ = 0, cells_z_ = 0;
+  int chunks_ = 1;
 };
 
 }  // namespace ffp::mpm
