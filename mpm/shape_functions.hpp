@@ -96,7 +96,6 @@ inline Weights1D gimp_weights(const GridAxis& axis, double x, double half_length
 /// transfer of the step uses the start-of-step positions).
 struct ShapeWeights {
   std::int32_t node_r = 0, node_z = 0;  ///< first node of the support patch
-  std::uint32_t cell = 0;               ///< grid cell holding the particle
   double wr[3], gr[3], wz[3], gz[3];
   double inverse_r;  ///< 1/r_p, for the hoop terms
 };

@@ -74,9 +74,12 @@ class Simulation {
   // --- per-step scratch, valid from compute_shape_functions to the step's end
   std::vector<ShapeWeights> weights;
   ParticleBins bins;
-  std::vector<std::uint32_t> strip;     ///< each particle's ParticleBins strip
+  std::vector<std::uint32_t> strip;  ///< each particle's ParticleBins strip
+  std::vector<std::uint32_t>
+      cell;  ///< each particle's grid cell (apart from its weights: the cell means read only this)
   std::vector<Voigt> strain_increment;  ///< Δε_p this step (Voigt)
-  std::vector<double> spin_dt;          ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
+  bool momentum_remapped = false;  ///< update_particles summed p_i = Σ S m v^{n+1} (MUSL) for map_velocities_to_grid
+  std::vector<double> spin_dt;     ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
   /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.
   std::vector<double> cell_volume, cell_volumetric_strain, cell_mean_stress;
 };

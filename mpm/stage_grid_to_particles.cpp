@@ -1,6 +1,7 @@
 /// Grid → particle transfers (convective phase). One particle per iteration:
 /// no shared writes, parallel and deterministic as is.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "mpm/stages.hpp"
@@ -23,16 +24,17 @@ inline void move_within_walls(Particles& P, std::size_t p, double r, double z, c
   P.z[p] = z;
 }
 
-template <int S, bool Move>
+/// Remap: also p_i += S_ip m_p v_p^{n+1} while the particle's weights are at hand
+/// (MUSL), in ParticleBins order, so every nodal sum keeps its one fixed order.
+template <int S, bool Move, bool Remap>
 void update_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s, alpha = s.settings.flip_fraction;
   const Walls& walls = s.walls;
   const std::size_t n = P.size();
-  long clamps = 0;
-  FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
-  for (std::size_t p = 0; p < n; ++p) {
-    const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+  std::atomic<long> clamps{0};  // rare (should stay 0): an atomic costs nothing here
+  auto update = [&](std::size_t p) {
+    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
     double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
     for (int b = 0; b < S; ++b) {
@@ -48,7 +50,34 @@ void update_particles_impl(Simulation& s) {
     }
     P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
     P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
-    if constexpr (Move) move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamps);
+    if constexpr (Move) {
+      long clamped = 0;
+      move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
+      if (clamped) clamps += clamped;
+    }
+    if constexpr (Remap) {
+      const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+      for (int b = 0; b < S; ++b) {
+        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
+        for (int a = 0; a < S; ++a) {
+          const std::size_t i = row + static_cast<std::size_t>(a);
+          const double N = w.wr[a] * w.wz[b];
+          f.momentum_r[i] += N * pr;
+          f.momentum_z[i] += N * pz;
+        }
+      }
+    }
+  };
+  if constexpr (Remap) {
+    for (NodalField& f : s.grid.fields) {
+      std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
+      std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
+    }
+    s.bins.scatter(update);
+    s.momentum_remapped = true;
+  } else {
+    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
+    for (std::size_t p = 0; p < n; ++p) update(p);
   }
   s.wall_clamps += clamps;
 }
@@ -118,12 +147,20 @@ void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray vel
 
 // v_p^{n+1} = α (v_p^n + Σ_i S_ip (v_i^{n+1} − v_i^n)) + (1 − α) Σ_i S_ip v_i^{n+1}
 // x_p^{n+1} = x_p^n + Δt Σ_i S_ip v_i^{n+1} (USL, classic MUSL); musl_remapped: in move_particles.
+// MUSL and musl_remapped: p_i = Σ_p S_ip m_p v_p^{n+1} summed here as well, for
+// map_velocities_to_grid (one pass over the particles instead of two).
 void update_particles(Simulation& s) {
   const bool linear = s.settings.shape_function == ShapeFunction::linear;
-  if (s.settings.transfer != Transfer::musl_remapped) {
-    linear ? update_particles_impl<2, true>(s) : update_particles_impl<3, true>(s);
-  } else {
-    linear ? update_particles_impl<2, false>(s) : update_particles_impl<3, false>(s);
+  switch (s.settings.transfer) {
+    case Transfer::usl:
+      linear ? update_particles_impl<2, true, false>(s) : update_particles_impl<3, true, false>(s);
+      break;
+    case Transfer::musl:
+      linear ? update_particles_impl<2, true, true>(s) : update_particles_impl<3, true, true>(s);
+      break;
+    case Transfer::musl_remapped:
+      linear ? update_particles_impl<2, false, true>(s) : update_particles_impl<3, false, true>(s);
+      break;
   }
 }
 

@@ -44,7 +44,7 @@ void scatter_internal_forces(Simulation& s) {
     Voigt sig = P.stress[p];
     if (smoothed &&
         takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
-      const double shift = s.cell_mean_stress[w.cell * bodies + P.body[p]] - trace(sig) / 3.0;
+      const double shift = s.cell_mean_stress[s.cell[p] * bodies + P.body[p]] - trace(sig) / 3.0;
       sig[0] += shift;
       sig[1] += shift;
       sig[2] += shift;
@@ -99,16 +99,21 @@ void compute_internal_forces(Simulation& s) {
 }
 
 // MUSL (Sulsky et al. 1995): p_i = Σ_p S_ip m_p v_p^{n+1};  v_i = p_i/m_i
+// (p_i is summed by update_particles as it updates each particle, unless a stage
+// list without it got here: then the sum is made here, in the same order).
 void map_velocities_to_grid(Simulation& s) {
-  for (NodalField& f : s.grid.fields) {
-    std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
-    std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
+  if (!s.momentum_remapped) {
+    for (NodalField& f : s.grid.fields) {
+      std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
+      std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
+    }
+    if (linear(s)) {
+      scatter_momentum<2>(s);
+    } else {
+      scatter_momentum<3>(s);
+    }
   }
-  if (linear(s)) {
-    scatter_momentum<2>(s);
-  } else {
-    scatter_momentum<3>(s);
-  }
+  s.momentum_remapped = false;
   const double floor = s.mass_floor_kg;
   for (NodalField& f : s.grid.fields) {
     const std::size_t n = f.size();

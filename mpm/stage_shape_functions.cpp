@@ -10,32 +10,41 @@ void compute_shape_functions(Simulation& s) {
   const std::size_t n = p.size();
   s.weights.resize(n);
   s.strip.resize(n);
+  s.cell.resize(n);
   const bool gimp = s.settings.shape_function == ShapeFunction::gimp;
   const GridAxis& axis_r = s.grid.r;
   const GridAxis& axis_z = s.grid.z;
   long outside = 0;
-  FFP_OMP(omp parallel for schedule(static) reduction(+ : outside) if (n >= kParallelMinimum))
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = p.r[i], z = p.z[i];
-    const int cr = axis_r.cell_of(r), cz = axis_z.cell_of(z);
-    if (cr < 0 || cz < 0) {
-      ++outside;
-      continue;
+  // Contiguous chunks, each counting its particles' strips for the bins as it goes.
+  s.bins.begin_build(n);
+  const int chunks = s.bins.chunks();
+  FFP_OMP(omp parallel for schedule(static, 1) reduction(+ : outside) if (n >= kParallelMinimum))
+  for (int t = 0; t < chunks; ++t) {
+    const auto [first, last] = s.bins.chunk_range(t, n);
+    std::uint32_t* strip_count = s.bins.counts(t);
+    for (std::size_t i = first; i < last; ++i) {
+      const double r = p.r[i], z = p.z[i];
+      const int cr = axis_r.cell_of(r), cz = axis_z.cell_of(z);
+      if (cr < 0 || cz < 0) {
+        ++outside;
+        continue;
+      }
+      const Weights1D wr = gimp ? gimp_weights(axis_r, r, p.half_r[i], cr) : linear_weights(axis_r, r, cr);
+      const Weights1D wz = gimp ? gimp_weights(axis_z, z, p.half_z[i], cz) : linear_weights(axis_z, z, cz);
+      ShapeWeights& w = s.weights[i];
+      w.node_r = wr.base;
+      w.node_z = wz.base;
+      for (int k = 0; k < 3; ++k) {
+        w.wr[k] = wr.w[k];
+        w.gr[k] = wr.g[k];
+        w.wz[k] = wz.w[k];
+        w.gz[k] = wz.g[k];
+      }
+      w.inverse_r = 1.0 / r;
+      s.cell[i] = static_cast<std::uint32_t>(s.grid.cell(cr, cz));
+      s.strip[i] = s.bins.strip_of(cr, cz);
+      ++strip_count[s.strip[i]];
     }
-    const Weights1D wr = gimp ? gimp_weights(axis_r, r, p.half_r[i], cr) : linear_weights(axis_r, r, cr);
-    const Weights1D wz = gimp ? gimp_weights(axis_z, z, p.half_z[i], cz) : linear_weights(axis_z, z, cz);
-    ShapeWeights& w = s.weights[i];
-    w.node_r = wr.base;
-    w.node_z = wz.base;
-    w.cell = static_cast<std::uint32_t>(s.grid.cell(cr, cz));
-    for (int k = 0; k < 3; ++k) {
-      w.wr[k] = wr.w[k];
-      w.gr[k] = wr.g[k];
-      w.wz[k] = wz.w[k];
-      w.gz[k] = wz.g[k];
-    }
-    w.inverse_r = 1.0 / r;
-    s.strip[i] = s.bins.strip_of(cr, cz);
   }
   if (outside > 0) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -44,7 +53,7 @@ void compute_shape_functions(Simulation& s) {
                           " m, z = " + std::to_string(p.z[i]) + " m (t = " + std::to_string(s.time_s) + " s)");
     }
   }
-  s.bins.build(s.strip);
+  s.bins.finish_build(s.strip);
 }
 
 }  // namespace ffp::mpm

@@ -1,5 +1,6 @@
 /// Stress-side stages: anti-locking smoothing and the constitutive update.
 #include <algorithm>
+#include <span>
 
 #include "mpm/stages.hpp"
 
@@ -20,23 +21,25 @@ void smooth_volumetric_strain(Simulation& s) {
   const std::vector<double> limit = cell_mean_density_limits(s);
   s.cell_volume.assign(slots, 0.0);
   s.cell_volumetric_strain.assign(slots, 0.0);
-  s.bins.for_each_in_cells([&](std::size_t p) {
-    if (!takes_part_in_cell_means(P, p, limit)) return;
-    const std::size_t k = s.weights[p].cell * bodies + P.body[p];
-    s.cell_volume[k] += P.volume[p];
-    s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
+  // Per strip (whose cells no other strip touches): the cell sums, then the
+  // shift of the same particles, in one pass over the strip's data.
+  s.bins.for_each_strip([&](int, std::span<const std::uint32_t> strip) {
+    for (const std::uint32_t p : strip) {
+      if (!takes_part_in_cell_means(P, p, limit)) continue;
+      const std::size_t k = s.cell[p] * bodies + P.body[p];
+      s.cell_volume[k] += P.volume[p];
+      s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
+    }
+    for (const std::uint32_t p : strip) {
+      if (!takes_part_in_cell_means(P, p, limit)) continue;
+      const std::size_t k = s.cell[p] * bodies + P.body[p];
+      Voigt& de = s.strain_increment[p];
+      const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
+      de[0] += shift;
+      de[1] += shift;
+      de[2] += shift;
+    }
   });
-  const std::size_t n = P.size();
-  FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!takes_part_in_cell_means(P, p, limit)) continue;
-    const std::size_t k = s.weights[p].cell * bodies + P.body[p];
-    Voigt& de = s.strain_increment[p];
-    const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
-    de[0] += shift;
-    de[1] += shift;
-    de[2] += shift;
-  }
 }
 
 // The transpose of strain smoothing, for the internal force (B-bar, Hughes 1980):
@@ -51,15 +54,18 @@ void smooth_mean_stress(Simulation& s) {
   const std::vector<double> limit = cell_mean_density_limits(s);
   s.cell_volume.assign(slots, 0.0);
   s.cell_mean_stress.assign(slots, 0.0);
-  s.bins.for_each_in_cells([&](std::size_t p) {
-    if (!takes_part_in_cell_means(P, p, limit)) return;
-    const std::size_t k = s.weights[p].cell * bodies + P.body[p];
-    s.cell_volume[k] += P.volume[p];
-    s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
+  s.bins.for_each_strip([&](int strip, std::span<const std::uint32_t> particles) {
+    for (const std::uint32_t p : particles) {
+      if (!takes_part_in_cell_means(P, p, limit)) continue;
+      const std::size_t k = s.cell[p] * bodies + P.body[p];
+      s.cell_volume[k] += P.volume[p];
+      s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
+    }
+    s.bins.for_each_cell_of_strip(strip, [&](std::size_t cell) {
+      for (std::size_t k = cell * bodies; k < (cell + 1) * bodies; ++k)
+        if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
+    });
   });
-  FFP_OMP(omp parallel for schedule(static) if (slots >= kParallelMinimum))
-  for (std::size_t k = 0; k < slots; ++k)
-    if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
 }
 
 std::vector<double> cell_mean_density_limits(const Simulation& s) {

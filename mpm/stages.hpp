@@ -30,9 +30,9 @@ void apply_surface_pressure(Simulation& s);     ///< nodal forces of pressures o
 void apply_local_damping(Simulation& s);        ///< Cundall: f_i −= α |f_i| sign(v_i)
 void integrate_grid(Simulation& s);             ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
 void apply_boundary_conditions(Simulation& s);  ///< zero constrained velocity components
-void update_particles(Simulation& s);           ///< FLIP/PIC velocity; position (but musl_remapped)
+void update_particles(Simulation& s);           ///< FLIP/PIC velocity; position (but musl_remapped); MUSL: p_i
 void move_particles(Simulation& s);             ///< musl_remapped: position from the remapped velocities
-void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i
+void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i (sum from update_particles)
 
 enum class StrainVelocity : std::uint8_t { updated_grid, remapped };
 void compute_strain_increments(Simulation& s, StrainVelocity source);  ///< Δε, spin, volume

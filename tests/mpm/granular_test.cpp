@@ -73,9 +73,9 @@ TEST_CASE("a disconnected sand particle's volume is held at its limit and it sta
   // the stress-free particle neither dilutes it nor takes it in the internal force.
   compute_shape_functions(s);
   smooth_mean_stress(s);
-  const std::size_t cell = s.weights[0].cell;
+  const std::size_t cell = s.cell[0];
   std::size_t in_cell = 0;
-  for (std::size_t p = 0; p < s.particles.size(); ++p) in_cell += s.weights[p].cell == cell;
+  for (std::size_t p = 0; p < s.particles.size(); ++p) in_cell += s.cell[p] == cell;
   REQUIRE(in_cell == 4);
   CHECK(s.cell_mean_stress[cell] == Approx(-1e3).epsilon(1e-12));
 }
