@@ -28,7 +28,7 @@ void update_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s, alpha = s.settings.flip_fraction;
   const Walls& walls = s.walls;
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   long clamps = 0;
   FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
@@ -58,7 +58,7 @@ void move_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s;
   const Walls& walls = s.walls;
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   long clamps = 0;
   FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
@@ -85,7 +85,7 @@ template <int S>
 void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray velocity_z) {
   Particles& P = s.particles;
   const double dt = s.dt_s;
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
     const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];

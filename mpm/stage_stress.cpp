@@ -21,12 +21,12 @@ void smooth_volumetric_strain(Simulation& s) {
   s.cell_volume.assign(slots, 0.0);
   s.cell_volumetric_strain.assign(slots, 0.0);
   s.bins.for_each_in_cells([&](std::size_t p) {
-    if (!takes_part_in_cell_means(P, p, limit)) return;
+    if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) return;  // a subcycled body smooths its own
     const std::size_t k = s.weights[p].cell * bodies + P.body[p];
     s.cell_volume[k] += P.volume[p];
     s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
   });
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;
   FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
     if (!takes_part_in_cell_means(P, p, limit)) continue;
@@ -81,6 +81,7 @@ void update_stresses(Simulation& s) {
   std::vector<Voigt>& stress = s.particles.stress;
   std::vector<Voigt>& strain = s.particles.strain;
   for (MaterialGroup& g : s.groups) {
+    if (g.begin >= s.main_step_end) continue;  // a subcycled body: stressed in its own substeps
     const auto chunks = static_cast<std::ptrdiff_t>((g.size() + chunk - 1) / chunk);
     FFP_OMP(omp parallel for schedule(dynamic, 1) if (g.size() >= kParallelMinimum))
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
