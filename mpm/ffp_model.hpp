@@ -121,7 +121,7 @@ struct FfpDescription {
   /// FFP run at 1/100 of its Δt loses 7 % of its speed in 4 ms instead of 1 %).
   /// per_soil_step scales it to the soil's initial CFL step at Courant 0.5.
   PicBlend pic_blend = PicBlend::per_soil_step;
-  Subcycle subcycle = Subcycle::automatic;  ///< deformable penetrometer only
+  Subcycle subcycle = Subcycle::off;  ///< deformable penetrometer only (off: today's single step)
   double gravity_m_s2 = 9.81;
 };
 
