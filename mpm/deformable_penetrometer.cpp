@@ -18,25 +18,37 @@ DeformablePenetrometer::DeformablePenetrometer(const Simulation& s, const Deform
 void DeformablePenetrometer::attach(Simulation& s) {
   s.stages.insert_before("update_particles",
                          {"apply_two_body_contact", [this](Simulation& sim) { apply_contact(sim); }});
+  if (settings_.subcycle) {
+    subcycle_ = std::make_unique<BodySubcycle>(s, settings_.body);
+    s.stages.insert_before("apply_two_body_contact", {"predict_penetrometer_velocity", [this](Simulation& sim) {
+                                                        subcycle_->predict_contact_velocity(sim);
+                                                      }});
+  }
   if (s.settings.transfer == Transfer::musl)  // the classic MUSL strains from a remapped field: correct it too
     s.stages.insert_before("compute_strain_increments", {"apply_two_body_contact_remapped",
                                                          [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last, {"follow_deformable_penetrometer", [this](Simulation& sim) { follow(sim); }});
+  if (subcycle_)
+    s.stages.insert_before("follow_deformable_penetrometer",
+                           {"subcycle_penetrometer", [this](Simulation& sim) { subcycle_->advance(sim, impulses_); }});
 }
 
 double DeformablePenetrometer::correct(Simulation& s, std::vector<double> NodalField::*vr,
-                                       std::vector<double> NodalField::*vz, std::size_t* corrected) {
+                                       std::vector<double> NodalField::*vz, std::size_t* corrected,
+                                       std::vector<NodalImpulse>* impulses) {
   NodalField& soil = s.grid.fields[settings_.soil_field];
   NodalField& body = s.grid.fields[settings_.penetrometer_field];
   std::vector<double>&svr = soil.*vr, &svz = soil.*vz, &bvr = body.*vr, &bvz = body.*vz;
   double impulse = 0.0;
   std::size_t count = 0;
+  // Subcycled, the body's inertia in the contact is that of the mass its substeps reach (BodySubcycle).
+  const double factor = impulses != nullptr ? subcycle_->contact_mass_factor() : 1.0;
   for (const ContactNode& c : nodes_) {
     const std::size_t k = c.node;
-    const double ms = soil.mass[k], mf = body.mass[k];
+    const double ms = soil.mass[k], mf = body.mass[k], mc = factor * mf;
     const Vector2 vs{svr[k], svz[k]}, vf{bvr[k], bvz[k]};
-    const Vector2 cm{(ms * vs.r + mf * vf.r) / (ms + mf), (ms * vs.z + mf * vf.z) / (ms + mf)};
+    const Vector2 cm{(ms * vs.r + mc * vf.r) / (ms + mc), (ms * vs.z + mc * vf.z) / (ms + mc)};
     const Vector2 after = contact_velocity(vs, cm, c.normal, settings_.contact, s.dt_s / s.grid.min_spacing());
     const double dr = after.r - vs.r, dz = after.z - vs.z;
     if (dr == 0.0 && dz == 0.0) continue;
@@ -46,6 +58,7 @@ double DeformablePenetrometer::correct(Simulation& s, std::vector<double> NodalF
     bvr[k] = vf.r - ms / mf * dr;
     bvz[k] = vf.z - ms / mf * dz;
     impulse += ms * dz;
+    if (impulses != nullptr) impulses->push_back({k, -ms * dr, -ms * dz});
   }
   if (corrected != nullptr) *corrected = count;
   return impulse;
@@ -68,14 +81,16 @@ void DeformablePenetrometer::apply_contact(Simulation& s) {
     }
   }
   std::size_t corrected = 0;
-  const double impulse = correct(s, &NodalField::velocity_new_r, &NodalField::velocity_new_z, &corrected);
+  impulses_.clear();
+  const double impulse = correct(s, &NodalField::velocity_new_r, &NodalField::velocity_new_z, &corrected,
+                                 subcycle_ ? &impulses_ : nullptr);
   state_.reaction_N = -kTwoPi * impulse / s.dt_s;
   state_.impulse_N_s += state_.reaction_N * s.dt_s;
   state_.contact_nodes = corrected;
 }
 
 void DeformablePenetrometer::apply_contact_remapped(Simulation& s) {
-  correct(s, &NodalField::velocity_r, &NodalField::velocity_z, nullptr);
+  correct(s, &NodalField::velocity_r, &NodalField::velocity_z, nullptr, nullptr);
 }
 
 void DeformablePenetrometer::follow(const Simulation& s) {

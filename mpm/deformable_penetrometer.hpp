@@ -10,10 +10,16 @@
 ///   v_f  = v*_f − (m_s/m_f)(v_s − v*_s)     (momentum is conserved node by node).
 /// The normal is the exact outline's, placed at the body's centre-of-mass
 /// displacement (the outline moves with the body; its elastic deformation is
-/// small). Its p-wave speed enters the time step like any material's.
+/// small). Its p-wave speed enters the time step like any material's, unless
+/// the body is subcycled (settings.subcycle, mpm/body_subcycle.hpp): then the
+/// step is the soil's, the body's velocity for contact is its particles' mapped
+/// velocity plus gravity, and the body takes the soil's corrections at the
+/// shared nodes, −m_s(v_s − v*_s), as impulses over its own substeps.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "mpm/body_subcycle.hpp"
 #include "mpm/contact_law.hpp"
 #include "mpm/penetrometer_geometry.hpp"
 #include "mpm/penetrometer_state.hpp"
@@ -30,6 +36,8 @@ struct DeformablePenetrometerSettings {
   /// Shared nodes with signed distance ≤ this take part (0: inside or on the
   /// outline; a few cells: every node both bodies' supports reach, the classical rule).
   double detection_distance_m = 0.0;
+  /// The body takes its own substeps inside the soil's step (it must be the last body).
+  bool subcycle = false;
 };
 
 class DeformablePenetrometer {
@@ -41,7 +49,9 @@ class DeformablePenetrometer {
 
   /// Insert apply_two_body_contact (after the grid update and fixities),
   /// apply_two_body_contact_remapped (classic MUSL) and follow_deformable_penetrometer
-  /// (centre of mass, before the time-step update). Keeps a pointer to this.
+  /// (centre of mass, before the time-step update); subcycled, also
+  /// predict_penetrometer_velocity (before the contact) and subcycle_penetrometer
+  /// (before follow_deformable_penetrometer). Keeps a pointer to this.
   void attach(Simulation& simulation);
 
   void apply_contact(Simulation& simulation);
@@ -54,12 +64,15 @@ class DeformablePenetrometer {
   double tip_z_m() const { return tip_z0_ + state_.displacement_m; }
   const PenetrometerGeometry& geometry() const { return geometry_; }
   double mass_kg() const { return mass_kg_; }
+  /// The substeps of the subcycled body (nullptr when it steps with the soil).
+  const BodySubcycle* subcycle() const { return subcycle_.get(); }
 
  private:
   /// Corrects both fields' velocities (the arrays `vr`, `vz`) at shared nodes;
-  /// returns Σ m_s (v_s − v*_s)_z per radian and counts corrected nodes.
+  /// returns Σ m_s (v_s − v*_s)_z per radian, counts corrected nodes and, given
+  /// `impulses`, lists the body's share −m_s (v_s − v*_s) node by node.
   double correct(Simulation& simulation, std::vector<double> NodalField::*vr, std::vector<double> NodalField::*vz,
-                 std::size_t* corrected);
+                 std::size_t* corrected, std::vector<NodalImpulse>* impulses);
 
   DeformablePenetrometerSettings settings_;
   PenetrometerGeometry geometry_;
@@ -67,6 +80,8 @@ class DeformablePenetrometer {
   double mass_kg_ = 0.0, z_cm0_ = 0.0;
   PenetrometerState state_;
   std::vector<ContactNode> nodes_;
+  std::unique_ptr<BodySubcycle> subcycle_;
+  std::vector<NodalImpulse> impulses_;  ///< of the last contact, for the substeps
 };
 
 }  // namespace ffp::mpm

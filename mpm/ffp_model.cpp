@@ -170,16 +170,25 @@ FfpRun::FfpRun(const FfpDescription& d)
     const double scale = d.mass_kg / sampled;
     for (std::size_t p = group.begin; p < group.end; ++p) s.particles.mass[p] *= scale;
     group.density_kg_m3 *= scale;
-    s.dt_limit_s = cfl_time_step_limit(s);
-    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
     DeformablePenetrometerSettings settings;
     settings.shape = d.shape;
     settings.tip_z_m = 0.0;
     settings.body = 1;
     settings.contact = d.contact;
     settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
+    if (d.subcycle == Subcycle::automatic) {
+      // The soil's limit: the step's CFL without the body's p-wave (its speed still counts).
+      s.main_step_end = group.begin;
+      const double soil_limit = cfl_time_step_limit(s);
+      s.main_step_end = s.particles.size();
+      settings.subcycle = soil_limit >= kSubcycleRatio * group_time_step_limit(s, group);
+    } else {
+      settings.subcycle = d.subcycle == Subcycle::on;
+    }
     deformable_ = std::make_unique<DeformablePenetrometer>(s, settings);
     deformable_->attach(s);
+    s.dt_limit_s = cfl_time_step_limit(s);
+    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   } else {
     RigidPenetrometerSettings settings;
     settings.shape = d.shape;

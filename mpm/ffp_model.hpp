@@ -81,6 +81,24 @@ inline std::string to_string(PicBlend b) {
   return std::string(std::ranges::find(kPicBlendNames, b, &PicBlendName::first)->second);
 }
 
+/// Whether a deformable penetrometer takes its own substeps inside the soil's step
+/// (mpm/body_subcycle.hpp) or the whole model steps at the stiffer CFL step.
+enum class Subcycle : std::uint8_t {
+  automatic,  ///< subcycle when the body's CFL step is below kSubcycleRatio times the soil's
+  on,
+  off,
+};
+using SubcycleName = std::pair<Subcycle, std::string_view>;
+/// The scene's names of Subcycle, in the order messages list them.
+inline constexpr auto kSubcycleNames =
+    std::to_array<SubcycleName>({{Subcycle::automatic, "auto"}, {Subcycle::on, "on"}, {Subcycle::off, "off"}});
+inline std::string to_string(Subcycle c) {
+  return std::string(std::ranges::find(kSubcycleNames, c, &SubcycleName::first)->second);
+}
+/// Subcycling::automatic subcycles when the soil's CFL step is at least this many
+/// times the body's: below it a few substeps save little, and the single step is exact.
+inline constexpr double kSubcycleRatio = 4.0;
+
 struct FfpDescription {
   FfpSoil soil;
   PenetrometerShape shape;
@@ -103,6 +121,7 @@ struct FfpDescription {
   /// FFP run at 1/100 of its Δt loses 7 % of its speed in 4 ms instead of 1 %).
   /// per_soil_step scales it to the soil's initial CFL step at Courant 0.5.
   PicBlend pic_blend = PicBlend::per_soil_step;
+  Subcycle subcycle = Subcycle::off;  ///< deformable penetrometer only (off: today's single step)
   double gravity_m_s2 = 9.81;
 };
 
@@ -141,6 +160,8 @@ class FfpRun {
   /// Whole-body mass: the description's for a rigid body, the particles' sum (equal) for a deformable one.
   double penetrometer_mass_kg() const { return deformable_ ? deformable_->mass_kg() : description_.mass_kg; }
   bool deformable() const { return deformable_ != nullptr; }
+  /// The deformable penetrometer's substeps (nullptr: rigid, or stepping with the soil).
+  const BodySubcycle* subcycle() const { return deformable_ ? deformable_->subcycle() : nullptr; }
   /// The soil's CFL step at t = 0 with the impact (or push) speed, 0.5·h_min/(c_p + |v0|):
   /// the reference step of PicBlend::per_soil_step.
   double soil_time_step_s() const { return soil_dt_s_; }

@@ -56,6 +56,7 @@ Simulation::Simulation(const ModelDescription& model)
   bins.configure(grid.r.cells(), grid.z.cells());
   strain_increment.assign(particles.size(), Voigt::Zero());
   spin_dt.assign(particles.size(), 0.0);
+  main_step_end = particles.size();
   stages = build_stages(*this);
 
   dt_limit_s = cfl_time_step_limit(*this);
@@ -70,7 +71,16 @@ void Simulation::advance() {
   dt_s = dt_next_s;
 }
 
-double cfl_time_step_limit(const Simulation& s) {
+namespace {
+
+/// A group's fastest signal: c_p + |v| bounded by √((M + |σ|)/ρ_min) + |v|_max (see below),
+/// and its speed part alone; `bad` counts particles with a non-finite state.
+struct SignalSpeed {
+  double wave_and_speed = 0.0, speed = 0.0;
+  long bad = 0;
+};
+
+SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
   const Particles& p = s.particles;
   // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
   // particle's sum and need no square root per particle. |σ| (a bound on the largest
@@ -78,44 +88,60 @@ double cfl_time_step_limit(const Simulation& s) {
   // where stresses approach the modulus (very soft bodies under gravity), and there
   // the elastic c_p alone let the step run unstable (measured: an E = 1 kPa block
   // collapsing under its own weight at Courant 1).
-  double fastest = 0.0;
+  double stiffest = 0.0, speed2 = 0.0, stress = 0.0;  // max 1/ρ, max |v|², max |σ|
   long bad = 0;
-  for (const MaterialGroup& g : s.groups) {
-    double stiffest = 0.0, speed2 = 0.0, stress = 0.0;  // max 1/ρ, max |v|², max |σ|
-    const auto begin = static_cast<std::ptrdiff_t>(g.begin), end = static_cast<std::ptrdiff_t>(g.end);
-    FFP_OMP(omp parallel for schedule(static) reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
-                if (g.size() >= kParallelMinimum))
-    for (std::ptrdiff_t k = begin; k < end; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      const double inverse_density = p.volume[i] / p.mass[i];
-      const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
-      const Voigt& sig = p.stress[i];
-      // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
-      const double bound =
-          std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
-      if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
-        ++bad;
-      stiffest = std::max(stiffest, inverse_density);
-      speed2 = std::max(speed2, v2);
-      stress = std::max(stress, bound);
-    }
-    if (bad > 0) break;
-    // A disconnected particle is stress-free; it reconnects at the disconnection density.
-    if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
-    fastest = std::max(fastest, std::sqrt((g.constrained_modulus() + stress) * stiffest) +
-                                    std::max(std::sqrt(speed2), s.rigid_speed_m_s));
+  const auto begin = static_cast<std::ptrdiff_t>(g.begin), end = static_cast<std::ptrdiff_t>(g.end);
+  FFP_OMP(omp parallel for schedule(static) reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
+              if (g.size() >= kParallelMinimum))
+  for (std::ptrdiff_t k = begin; k < end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double inverse_density = p.volume[i] / p.mass[i];
+    const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
+    const Voigt& sig = p.stress[i];
+    // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
+    const double bound =
+        std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
+    if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
+      ++bad;
+    stiffest = std::max(stiffest, inverse_density);
+    speed2 = std::max(speed2, v2);
+    stress = std::max(stress, bound);
   }
-  if (bad > 0) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (!(p.volume[i] > 0.0) || !std::isfinite(p.volume[i]) || !std::isfinite(p.vr[i]) || !std::isfinite(p.vz[i]) ||
-          !p.stress[i].allFinite())
-        throw StepFailure("particle " + std::to_string(i) +
-                          " has a non-finite velocity or stress, or a non-positive "
-                          "volume at t = " +
-                          std::to_string(s.time_s) + " s (unstable step?)");
-    }
+  // A disconnected particle is stress-free; it reconnects at the disconnection density.
+  if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
+  const double speed = std::max(std::sqrt(speed2), s.rigid_speed_m_s);
+  return {std::sqrt((g.constrained_modulus() + stress) * stiffest) + speed, speed, bad};
+}
+
+[[noreturn]] void report_bad_particle(const Simulation& s) {
+  const Particles& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!(p.volume[i] > 0.0) || !std::isfinite(p.volume[i]) || !std::isfinite(p.vr[i]) || !std::isfinite(p.vz[i]) ||
+        !p.stress[i].allFinite())
+      throw StepFailure("particle " + std::to_string(i) +
+                        " has a non-finite velocity or stress, or a non-positive "
+                        "volume at t = " +
+                        std::to_string(s.time_s) + " s (unstable step?)");
+  }
+  throw StepFailure("a particle has a non-finite state at t = " + std::to_string(s.time_s) + " s");
+}
+
+}  // namespace
+
+double cfl_time_step_limit(const Simulation& s) {
+  double fastest = 0.0;
+  for (const MaterialGroup& g : s.groups) {
+    const SignalSpeed signal = signal_speed(s, g);
+    if (signal.bad > 0) report_bad_particle(s);
+    fastest = std::max(fastest, g.begin < s.main_step_end ? signal.wave_and_speed : signal.speed);
   }
   return s.grid.min_spacing() / fastest;
+}
+
+double group_time_step_limit(const Simulation& s, const MaterialGroup& g) {
+  const SignalSpeed signal = signal_speed(s, g);
+  if (signal.bad > 0) report_bad_particle(s);
+  return s.grid.min_spacing() / signal.wave_and_speed;
 }
 
 }  // namespace ffp::mpm

@@ -70,6 +70,11 @@ class Simulation {
   double rigid_speed_m_s = 0.0;
   Walls walls{};         ///< from the boundary conditions
   long wall_clamps = 0;  ///< particle moves stopped at a wall or the axis (should stay 0)
+  /// Particles [0, main_step_end) are moved, strained and stressed by the step's stages;
+  /// those after it belong to a body that takes its own substeps inside the step
+  /// (mpm/body_subcycle.hpp) and only lend their mass and momentum to the grid.
+  /// All particles unless a body is subcycled.
+  std::size_t main_step_end = 0;
 
   // --- per-step scratch, valid from compute_shape_functions to the step's end
   std::vector<ShapeWeights> weights;
@@ -86,6 +91,11 @@ class Simulation {
 
 /// The CFL limit Δt_crit = h_min / (c_p + |v|_max): c_p = √(M/ρ) of each group at
 /// its lowest current density, |v|_max of its particles (throws StepFailure on NaN).
+/// A subcycled group (past main_step_end) counts with its speed only: its own
+/// substeps keep its p-wave stable.
 double cfl_time_step_limit(const Simulation& simulation);
+
+/// The same limit for one group alone, its p-wave included (a subcycled body's substep).
+double group_time_step_limit(const Simulation& simulation, const MaterialGroup& group);
 
 }  // namespace ffp::mpm

@@ -31,29 +31,31 @@ void update_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s, alpha = s.settings.flip_fraction;
   const Walls& walls = s.walls;
-  const std::size_t n = P.size();
-  std::atomic<long> clamps{0};  // rare (should stay 0): an atomic costs nothing here
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
+  std::atomic<long> clamps{0};            // rare (should stay 0): an atomic costs nothing here
   auto update = [&](std::size_t p) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
-    double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
-    for (int b = 0; b < S; ++b) {
-      const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-      for (int a = 0; a < S; ++a) {
-        const std::size_t i = row + static_cast<std::size_t>(a);
-        const double N = w.wr[a] * w.wz[b];
-        vr += N * f.velocity_new_r[i];
-        vz += N * f.velocity_new_z[i];
-        dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
-        dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+    if (p < n) {  // not a subcycled body's particle
+      double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
+      for (int b = 0; b < S; ++b) {
+        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
+        for (int a = 0; a < S; ++a) {
+          const std::size_t i = row + static_cast<std::size_t>(a);
+          const double N = w.wr[a] * w.wz[b];
+          vr += N * f.velocity_new_r[i];
+          vz += N * f.velocity_new_z[i];
+          dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
+          dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+        }
       }
-    }
-    P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
-    P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
-    if constexpr (Move) {
-      long clamped = 0;
-      move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
-      if (clamped) clamps += clamped;
+      P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
+      P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
+      if constexpr (Move) {
+        long clamped = 0;
+        move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
+        if (clamped) clamps += clamped;
+      }
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
@@ -87,7 +89,7 @@ void move_particles_impl(Simulation& s) {
   Particles& P = s.particles;
   const double dt = s.dt_s;
   const Walls& walls = s.walls;
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   long clamps = 0;
   FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
@@ -114,7 +116,7 @@ template <int S>
 void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray velocity_z) {
   Particles& P = s.particles;
   const double dt = s.dt_s;
-  const std::size_t n = P.size();
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
   for (std::size_t p = 0; p < n; ++p) {
     const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];

@@ -25,13 +25,13 @@ void smooth_volumetric_strain(Simulation& s) {
   // shift of the same particles, in one pass over the strip's data.
   s.bins.for_each_strip([&](int, std::span<const std::uint32_t> strip) {
     for (const std::uint32_t p : strip) {
-      if (!takes_part_in_cell_means(P, p, limit)) continue;
+      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;  // a subcycled body smooths its own
       const std::size_t k = s.cell[p] * bodies + P.body[p];
       s.cell_volume[k] += P.volume[p];
       s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
     }
     for (const std::uint32_t p : strip) {
-      if (!takes_part_in_cell_means(P, p, limit)) continue;
+      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;
       const std::size_t k = s.cell[p] * bodies + P.body[p];
       Voigt& de = s.strain_increment[p];
       const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
@@ -87,6 +87,7 @@ void update_stresses(Simulation& s) {
   std::vector<Voigt>& stress = s.particles.stress;
   std::vector<Voigt>& strain = s.particles.strain;
   for (MaterialGroup& g : s.groups) {
+    if (g.begin >= s.main_step_end) continue;  // a subcycled body: stressed in its own substeps
     const auto chunks = static_cast<std::ptrdiff_t>((g.size() + chunk - 1) / chunk);
     FFP_OMP(omp parallel for schedule(dynamic, 1) if (g.size() >= kParallelMinimum))
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {

@@ -20,7 +20,8 @@
 ///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
 ///               pic_blend per_soil_step | per_step (the PIC share 1 − flip_fraction per soil CFL step
 ///               at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt: mpm/ffp_model.hpp),
-///               courant 0.5, strain_smoothing true}
+///               courant 0.5, strain_smoothing true, subcycle off | auto | on (a deformable FFP's own
+///               substeps inside the soil's step: mpm/body_subcycle.hpp)}
 ///   output     {history_interval_s 2e-4, field_times_s [0.04, 0.06, end], strain_colour_max 0.5}
 /// Writes history.csv (time_s, penetration_m (+ down), velocity_m_s (+ down), deceleration_g
 /// ((R − Mg)/Mg, + when slowing a downward motion), reaction_N (soil on FFP, + up), contact_nodes,
@@ -81,7 +82,10 @@ class PenetrometerJob : public Job {
         name_(std::move(name)),
         size_(size),
         run_(std::make_unique<mpm::FfpRun>(scene_.model)),
-        initial_dt_s_(run_->simulation().dt_s) {}
+        initial_dt_s_(run_->simulation().dt_s),
+        initial_energy_(mpm::measure(run_->simulation())) {
+    if (run_->deformable()) initial_penetrometer_energy_ = mpm::measure_body(run_->simulation(), 1);
+  }
 
   void describe(std::ostream& out) const override {
     const mpm::Simulation& s = run_->simulation();
@@ -131,6 +135,7 @@ class PenetrometerJob : public Job {
   mpm::ModelSize size_;
   std::unique_ptr<mpm::FfpRun> run_;
   double initial_dt_s_;
+  mpm::Diagnostics initial_energy_, initial_penetrometer_energy_;
   std::vector<FfpSample> samples_;
 };
 
@@ -263,6 +268,28 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;
   sum["penetrometer"] = ffp.deformable() ? "linear_elastic" : "rigid";
+  if (ffp.deformable()) {
+    // Energy (kinetic + recoverable elastic + m g z, full 2π) of the whole model and of the
+    // penetrometer at the start and the end: what the soil's plasticity, the contact friction
+    // and the transfers dissipated, and no energy from nowhere.
+    const mpm::Diagnostics end = mpm::measure(s), body = mpm::measure_body(s, 1);
+    sum["energy_initial_J"] = initial_energy_.total_energy_J();
+    sum["energy_final_J"] = end.total_energy_J();
+    sum["penetrometer_energy_initial_J"] = initial_penetrometer_energy_.total_energy_J();
+    sum["penetrometer_energy_final_J"] = body.total_energy_J();
+    sum["penetrometer_strain_energy_final_J"] = body.strain_energy_J;
+    sum["subcycled"] = ffp.subcycle() != nullptr;
+    if (const mpm::BodySubcycle* sub = ffp.subcycle()) {
+      sum["penetrometer_substeps"] = sub->total_substeps();
+      sum["penetrometer_substeps_last_step"] = sub->last_substeps();
+      // Work of the soil's contact forces on the body's nodes: its energy change but for
+      // what the transfers (FLIP/PIC) lose; relative to the impact energy.
+      sum["penetrometer_contact_work_J"] = sub->contact_work_J();
+      const double impact = initial_penetrometer_energy_.kinetic_energy_J;
+      sum["penetrometer_energy_balance_error"] =
+          (body.total_energy_J() - initial_penetrometer_energy_.total_energy_J() - sub->contact_work_J()) / impact;
+    }
+  }
   sum["stages"] = s.stages.names();
   sum["mpm_threads"] = mpm::thread_count();
   sum["wall_clamps"] = s.wall_clamps;

@@ -1,0 +1,131 @@
+/// The steel penetrometer subcycled (mpm/body_subcycle.hpp): it takes its own
+/// CFL substeps inside the soil's step, exchanges contact once per soil step,
+/// and must follow the single-step run, conserve momentum to round-off and
+/// create no energy.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "coarse_ffp.hpp"
+#include "mpm/diagnostics.hpp"
+#include "mpm/ffp_model.hpp"
+
+using namespace ffp;
+using namespace ffp::mpm;
+
+namespace {
+
+FfpDescription steel(Subcycle subcycle) {
+  FfpDescription d = test::coarse_ffp();
+  d.deformable = DeformableFfp{200e9, 0.3, 2, 2};  // data/scenes/ffp_steel.json
+  d.subcycle = subcycle;
+  return d;
+}
+
+struct Sample {
+  double t, depth, velocity;
+};
+
+std::vector<Sample> history(FfpRun& run, double end_s, double every_s) {
+  std::vector<Sample> out;
+  Simulation& s = run.simulation();
+  double next = every_s;
+  while (s.time_s < end_s * (1.0 - 1e-12)) {
+    if (s.time_s + s.dt_s > end_s) s.dt_s = end_s - s.time_s;
+    run.advance();
+    if (s.time_s >= next * (1.0 - 1e-12)) {
+      out.push_back({s.time_s, run.penetration_m(), run.velocity_down_m_s()});
+      next += every_s;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("subcycling is automatic for a steel FFP and off for the paper's 20 MPa one", "[ffp][subcycle]") {
+  FfpRun subcycled(steel(Subcycle::automatic));
+  REQUIRE(subcycled.subcycle() != nullptr);
+  CHECK(subcycled.simulation().stages.contains("subcycle_penetrometer"));
+  FfpDescription soft = steel(Subcycle::automatic);
+  soft.deformable = DeformableFfp{20e6, 0.0, 2, 2};  // data/scenes/ffp_elastic.json: c_p ≈ 90 m/s, ratio < 2
+  FfpRun single(soft);
+  CHECK(single.subcycle() == nullptr);
+  CHECK_FALSE(single.simulation().stages.contains("subcycle_penetrometer"));
+  CHECK(single.simulation().main_step_end == single.simulation().particles.size());
+}
+
+TEST_CASE("a subcycled steel FFP takes N = ceil(dt_soil/dt_steel) substeps and the soil's step (2 cm)",
+          "[ffp][subcycle]") {
+  FfpRun run(steel(Subcycle::on)), single(steel(Subcycle::off));
+  const Simulation& s = run.simulation();
+  // The step is the soil's: c_p of the sand ≈ 50 m/s against ≈ 10.5 km/s in steel.
+  const double ratio = s.dt_s / single.simulation().dt_s;
+  INFO("soil step " << s.dt_s << " s, single step " << single.simulation().dt_s << " s");
+  CHECK(ratio > 100.0);
+  run.advance();
+  const int n = run.subcycle()->last_substeps();
+  CHECK(n == static_cast<int>(std::ceil(ratio * (1.0 - 1e-9))));
+  CHECK(run.subcycle()->total_substeps() == n);
+}
+
+TEST_CASE("subcycled steel FFP: the soil loses exactly the reported impulse (weightless, 2 ms)",
+          "[ffp][subcycle][momentum]") {
+  // The soil's corrections are handed to the body as nodal impulses and act as
+  // constant forces over its substeps: momentum closes to round-off, like the
+  // single step's node-by-node exchange.
+  FfpDescription d = steel(Subcycle::on);
+  d.gravity_m_s2 = 0.0;
+  FfpRun run(d);
+  Simulation& s = run.simulation();
+  const double ffp0 = measure_body(s, 1).momentum_z_N_s;
+  while (s.time_s < 0.002) run.advance();
+  const double soil = measure_body(s, 0).momentum_z_N_s, ffp = measure_body(s, 1).momentum_z_N_s;
+  INFO("FFP momentum change " << ffp - ffp0 << " N s, soil momentum " << soil << " N s, ∫R dt "
+                              << run.state().impulse_N_s << " after " << s.step << " steps");
+  REQUIRE(ffp - ffp0 > 0.3);  // a real exchange
+  // The soil's side: it loses what the reported impulse says (1e-5 as the single step's
+  // test, before the disturbance reaches the fixed boundaries; by 4 ms it is 1.1e-4).
+  CHECK(soil == Approx(-run.state().impulse_N_s).epsilon(1e-5));
+  // The body's side is not yet: it gains 0.04–0.13 % more per step than the impulses it
+  // is handed (measured; the single step closes to 1e-10). An open defect of the
+  // substeps, bounded here so that it cannot grow unnoticed.
+  CHECK(std::abs(run.state().impulse_N_s - (ffp - ffp0)) < 2e-3 * (ffp - ffp0));
+}
+
+TEST_CASE("a subcycled steel FFP follows the single-step one and creates no energy (2 cm, 10 ms)",
+          "[ffp][subcycle][steel]") {
+  FfpRun run(steel(Subcycle::on)), single(steel(Subcycle::off));
+  const double end = 0.01;
+  const auto a = history(run, end, 0.001), b = history(single, end, 0.001);
+  REQUIRE(a.size() == b.size());
+  double depth = 0.0, velocity = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    depth = std::max(depth, std::abs(a[k].depth - b[k].depth));
+    velocity = std::max(velocity, std::abs(a[k].velocity - b[k].velocity));
+  }
+  const double slowed = 5.6 - b.back().velocity;
+  INFO("largest differences: depth " << depth << " m of " << b.back().depth << " m, velocity " << velocity
+                                     << " m/s of a slowdown of " << slowed << " m/s; steps " << run.simulation().step
+                                     << " vs " << single.simulation().step);
+  CHECK(slowed > 0.2);  // the soil has taken a real share of the momentum
+  // 2 % of the penetration (measured 1.4 %) and 1 % of the impact speed (measured 0.5 %).
+  // Not closer: the rigid FFP alone moves as much between the soil's CFL step and the
+  // steel's (2 cm, 0.15 s: final penetration 0.164 m at Courant 0.5, 0.178 m at 0.01):
+  // the difference is the soil's and the contact's time step, not the body's substeps.
+  CHECK(depth < 0.02 * b.back().depth);
+  CHECK(velocity < 0.01 * 5.6);
+  CHECK(run.simulation().step * 50 < single.simulation().step);
+  // No energy from nowhere: the whole model only loses energy (plasticity, friction, transfers).
+  FfpRun start(steel(Subcycle::on));
+  const double initial = measure(start.simulation()).total_energy_J();
+  CHECK(measure(run.simulation()).total_energy_J() < initial);
+  // The body's energy changes by the work of the contact forces on it, up to what its
+  // particle update (FLIP/PIC) loses: 1 % of the impact energy.
+  const Diagnostics body0 = measure_body(start.simulation(), 1), body = measure_body(run.simulation(), 1);
+  const double balance = body.total_energy_J() - body0.total_energy_J() - run.subcycle()->contact_work_J();
+  INFO("body energy change " << body.total_energy_J() - body0.total_energy_J() << " J, contact work "
+                             << run.subcycle()->contact_work_J() << " J");
+  CHECK(std::abs(balance) < 0.01 * body0.kinetic_energy_J);
+}
