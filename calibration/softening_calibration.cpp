@@ -175,7 +175,7 @@ class Calibration {
         settings_.mode == CalibrationMode::dissipated_work ? 1 : static_cast<int>(lab_.axial_strain.size());
     auto residuals = [this](double x, double* r) {
       try {
-        residuals_of(evaluate(std::exp(x)), r);
+        residuals_of(evaluate(nearby_run(std::exp(x))), r);
         return true;
       } catch (const PointIntegrationFailure&) {
         // A trial η the element test cannot integrate: Ceres rejects the step and shrinks the region.
@@ -231,6 +231,13 @@ class Calibration {
     options.parameter_tolerance = settings_.parameter_tolerance;
     options.function_tolerance = 1e-10;
     options.gradient_tolerance = 1e-16;
+    // With bounds, Ceres follows each trust-region step by a projected Armijo line search
+    // (trust_region_minimizer.cc, DoLineSearch) whose trial points are runs of their own. On
+    // a specimen whose W jitters (the MPM's, ±2e-3 at 0.5 cm) Armijo fails on noise and
+    // each rejected step cost up to 3 extra runs (measured: 16 runs in 5 iterations at
+    // 0.5 cm). The secant path drops it: a rejected step shrinks the region, one run each.
+    // The central path keeps Ceres' default, as the element test's fits have always run.
+    if (settings_.derivative == FitDerivative::secant) options.max_num_line_search_step_size_iterations = 0;
     AbortOnPendingException abort(pending_);
     options.callbacks.push_back(&abort);
     StopWithinWorkTolerance within(settings_.work_tolerance);
@@ -247,9 +254,10 @@ class Calibration {
     if (summary.termination_type == ceres::FAILURE || !std::isfinite(x))
       throw CalibrationFailure("the fit of η failed: " + result.termination);
 
-    result.eta = std::exp(x);
+    result.eta = nearby_run(std::exp(x));  // the run Ceres' last point took
+    const double x_fit = std::log(result.eta);
     result.at_bound =
-        std::abs(x - std::log(settings_.eta_min)) < 1e-6 || std::abs(x - std::log(settings_.eta_max)) < 1e-6;
+        std::abs(x_fit - std::log(settings_.eta_min)) < 1e-6 || std::abs(x_fit - std::log(settings_.eta_max)) < 1e-6;
     result.fitted = evaluate(result.eta);
     result.dissipated_work_model_J = work_of(result.fitted);
     result.relative_work_residual = (result.dissipated_work_model_J - work_lab_) / work_lab_;
@@ -286,6 +294,20 @@ class Calibration {
     } else {
       curve_residuals(curve, r);
     }
+  }
+
+  /// The η of the run made nearest to η within the reuse radius in ln η, else η itself.
+  double nearby_run(double eta) const {
+    if (!(settings_.reuse_radius_ln_eta > 0.0) || runs_.has(eta)) return eta;
+    double best = eta, best_distance = settings_.reuse_radius_ln_eta;
+    for (const auto& [made, curve] : runs_.curves()) {
+      const double distance = std::abs(std::log(made / eta));
+      if (distance <= best_distance) {
+        best = made;
+        best_distance = distance;
+      }
+    }
+    return best;
   }
 
   /// The η of the run nearest to ln η = x among those at least h away (null: none).

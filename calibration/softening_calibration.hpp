@@ -90,6 +90,12 @@ struct CalibrationSettings {
   /// one η to the next, by ~1e-5 relative at 2 cm and up to ±2e-3 at 0.5 cm,
   /// against W' ≈ 0.04 W per unit ln η near the match (0.1 lifts the slope above it).
   double derivative_step = 1e-4;
+  /// A trial η within this distance in ln η of a run already made takes that run (0: only
+  /// the same η). Below the specimen's noise a nearer run tells nothing new: at 0.5 cm W
+  /// jitters by ±2e-3, i.e. ±0.025 in ln η at W' ≈ 0.08 W per unit ln η, and Ceres, once
+  /// a step fails on that noise, shrinks its region to steps of 1e-5 in ln η, a run each.
+  /// The fitted η is then the η of the run it took (0.5 % at most from Ceres' point with 0.005).
+  double reuse_radius_ln_eta = 0.0;
   /// Ceres' parameter tolerance: the fit stops when a step changes ln η by less
   /// than this (relative). 1e-8 for the element test; an MPM specimen's noise
   /// makes anything below ~1e-4 a random walk.

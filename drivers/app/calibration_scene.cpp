@@ -134,6 +134,8 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
   spec.settings.parameter_tolerance =
       scene.number("parameter_tolerance", Range::open(0.0, 1.0), mpm_specimen ? 1e-4 : 1e-8);
   spec.settings.work_tolerance = scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
+  spec.settings.reuse_radius_ln_eta =
+      scene.number("reuse_radius_ln_eta", Range::closed(0.0, 0.5), mpm_specimen ? 0.005 : 0.0);
 
   spec.fitted_peak_friction = scene.boolean("fit_peak_friction", false);
   if (spec.fitted_peak_friction) {

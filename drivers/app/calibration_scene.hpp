@@ -42,6 +42,8 @@
 ///   derivative           the fit's dr/d ln η: central (two runs a point) | secant (through the
 ///                        run made nearest, at least derivative_step_ln_eta away: no run; default:
 ///                        element central; mpm secant)
+///   reuse_radius_ln_eta  a trial η this near (in ln η) to a run made takes that run (default:
+///                        element 0, only the same η; mpm 0.005 — below the MPM's jitter)
 ///   max_iterations       Ceres iterations (default 50)
 ///   derivative_step_ln_eta  central-difference step of the fit in ln η (default: element
 ///                        1e-4; mpm 0.1 — the MPM's W jitters by up to ±0.2 % between
