@@ -184,13 +184,13 @@ TEST_CASE("calibration scene: specimen keys belong to their type (exit 2)", "[ca
   CHECK(s["element_test_increments"].get<int>() == 1000);
 }
 
-TEST_CASE("MPM specimen at 1 cm: a platen twice as fast would change W by < 0.5 % (hidden: 6 runs, ~25 s)",
+TEST_CASE("MPM specimen at 1 cm: a platen twice as fast changes W by more than the fit may (hidden: 6 runs, ~25 s)",
           "[.][calibration][mpm][speed-check]") {
-  // The check a cheaper run must pass before a calibration scene may use it: W at the
-  // 1 cm fit's η (29) and at the compare_eta (2.5, 15) with the scene's 0.01 m/s and
-  // with 0.02 m/s (half the steps). Near the match W changes by ~8 % per unit ln η
-  // (the 1 cm scan: 0.527 J at η = 20.5, 0.483 J at 59.5), so even 0.5 % of W moves
-  // η by ~6 %: the calibration's "same η to 1 %" asks for < 0.08 %.
+  // Why the meshed calibrations keep 0.01 m/s: a cheaper run must change W by < 0.5 %
+  // (issue 15), and for "the same η to 1 %" by much less: near the match W changes by
+  // ~8 % per unit ln η (the 1 cm scan: 0.527 J at η = 20.5, 0.483 J at 59.5), so 1 % of
+  // η is 0.08 % of W. Measured at 0.02 against 0.01 m/s (half the steps): +0.66 % at
+  // η = 2.5, +0.63 % at 15, +0.53 % at 29 (0.5118 → 0.5144 J): above both.
   MpmTriaxialConfig c;
   c.cell_m = 0.01;
   for (double eta : {2.5, 15.0, 29.0}) {
@@ -201,6 +201,6 @@ TEST_CASE("MPM specimen at 1 cm: a platen twice as fast would change W by < 0.5 
     const double w_fast = work_of(run_mpm_triaxial(law, c), c.specimen);
     INFO("η = " << eta << ": W " << w_scene << " J at 0.01 m/s, " << w_fast << " J at 0.02 m/s ("
                 << 100.0 * (w_fast / w_scene - 1.0) << " %)");
-    CHECK(std::abs(w_fast / w_scene - 1.0) < 0.005);
+    CHECK(std::abs(w_fast / w_scene - 1.0) > 0.005);
   }
 }
