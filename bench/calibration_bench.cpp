@@ -9,6 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include "calibration/lab_curve.hpp"
+#include "calibration/mpm_triaxial_specimen.hpp"
 #include "calibration/numerical_triaxial.hpp"
 #include "calibration/softening_calibration.hpp"
 #include "models/math_constants.hpp"
@@ -79,6 +80,49 @@ void BM_ElementTest(benchmark::State& bench) {
   bench.SetItemsProcessed(bench.iterations() * bench.range(0));  // increments/s
 }
 BENCHMARK(BM_ElementTest)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+/// The meshed calibration's two paths on the lab curve at D_r = 15 % with the 2 cm
+/// specimen (64 particles, the cheapest meshed one): 0 = central differences from
+/// η = 8 after a 9-point scan (the scenes before the fast path), 1 = the scenes'
+/// mpm defaults (3-point scan with the compare_eta 2.5 and 15, Ceres from the scan's
+/// crossing, secant slopes), runs side by side on range(1) threads.
+void BM_MeshedCalibration(benchmark::State& bench) {
+  const bool fast = bench.range(0) == 1;
+  const LabCurve curve = lab(true);
+  MpmTriaxialConfig config;
+  config.cell_m = 0.02;
+  config.axial_strain_max = curve.axial_strain.back();
+  const NumericalTriaxial triaxial = mpm_triaxial_specimen(sand(true), config);
+  CalibrationSettings settings;
+  settings.derivative_step = 0.1;
+  settings.parameter_tolerance = 1e-4;
+  settings.work_tolerance = 2e-4;
+  if (fast) {
+    settings.scan_points = 3;
+    settings.scan_extra_eta = {2.5, 15.0};
+    settings.derivative = FitDerivative::secant;
+  } else {
+    settings.eta_start = 8.0;
+  }
+  int runs = 0;
+  double eta = 0.0;
+  for (auto _ : bench) {
+    SpecimenRuns store(triaxial, static_cast<int>(bench.range(1)));
+    const CalibrationResult r = calibrate_softening_factor(curve, store, settings);
+    if (!fast) store.run_all(std::vector<double>{2.5, 15.0});  // the compare_eta the scene draws
+    runs = store.runs();
+    eta = r.eta;
+  }
+  bench.counters["eta"] = eta;
+  bench.counters["specimen_runs"] = runs;
+}
+BENCHMARK(BM_MeshedCalibration)
+    ->ArgNames({"fast", "threads"})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({1, 2})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 

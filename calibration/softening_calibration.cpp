@@ -11,6 +11,8 @@
 
 #include <ceres/ceres.h>
 
+#include "calibration/monotone_crossing.hpp"
+
 namespace ffp {
 
 double dissipated_work_J(const std::vector<double>& axial_strain, const std::vector<double>& deviatoric_stress_Pa,
@@ -38,21 +40,31 @@ std::string format(double v) {
   return out.str();
 }
 
-/// Residuals of one scalar parameter x = ln η, with a central-difference
-/// Jacobian of fixed absolute step in x (Ceres' own numeric differences scale
-/// the step with |x|, which vanishes at η = 1). The last point evaluated is
-/// cached with its Jacobian: Ceres evaluates a trial step, then asks for the
-/// Jacobian at it once accepted, and again before it reports convergence
-/// (measured: 5 numerical triaxials per iteration without the Jacobian cached, 3 with).
+/// Residuals of one scalar parameter x = ln η, with a Jacobian of fixed
+/// absolute step in x (Ceres' own numeric differences scale the step with |x|,
+/// which vanishes at η = 1): central differences, or the secant to a run
+/// already made. The last point evaluated is cached with its Jacobian: Ceres
+/// evaluates a trial step, then asks for the Jacobian at it once accepted, and
+/// again before it reports convergence (measured: 5 numerical triaxials per
+/// iteration without the Jacobian cached, 3 with; the runs are memoised as well).
 /// The step is the settings' derivative_step: 1e-4 for the element test gives a
 /// truncation error ~1e-8 relative, while W's rounding (Newton stops at 1e-10 of
 /// the stress) perturbs the slope by ~1e-6 at most.
 class LogEtaCost final : public ceres::CostFunction {
  public:
   using Residuals = std::function<bool(double x, double* residuals)>;
+  /// Makes the runs at x − h and x + h side by side (a failure is left for Residuals to meet).
+  using Prefetch = std::function<void(double x_minus, double x_plus)>;
+  /// A run already made to draw the secant to: its x (at least h from `x`) and
+  /// residuals; false if there is none.
+  using SecantPartner = std::function<bool(double x, double& x_partner, double* residuals)>;
 
-  LogEtaCost(int residual_count, double step, Residuals residuals)
-      : step_(step), residuals_(std::move(residuals)), cache_(static_cast<std::size_t>(residual_count)) {
+  LogEtaCost(int residual_count, double step, Residuals residuals, Prefetch prefetch, SecantPartner partner)
+      : step_(step),
+        residuals_(std::move(residuals)),
+        prefetch_(std::move(prefetch)),
+        partner_(std::move(partner)),
+        cache_(static_cast<std::size_t>(residual_count)) {
     set_num_residuals(residual_count);
     mutable_parameter_block_sizes()->push_back(1);
   }
@@ -67,21 +79,39 @@ class LogEtaCost final : public ceres::CostFunction {
     }
     std::copy(cache_.begin(), cache_.end(), residuals);
     if (jacobians != nullptr && jacobians[0] != nullptr) {
-      if (!has_jacobian_) {
-        std::vector<double> plus(cache_.size()), minus(cache_.size());
-        if (!residuals_(x + step_, plus.data()) || !residuals_(x - step_, minus.data())) return false;
-        jacobian_.resize(cache_.size());
-        for (std::size_t i = 0; i < cache_.size(); ++i) jacobian_[i] = (plus[i] - minus[i]) / (2.0 * step_);
-        has_jacobian_ = true;
-      }
+      if (!has_jacobian_ && !(partner_ ? secant(x) : central(x))) return false;
       std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
     }
     return true;
   }
 
  private:
+  // dr/dx ≈ (r(x + h) − r(x − h)) / 2h.
+  bool central(double x) const {
+    std::vector<double> plus(cache_.size()), minus(cache_.size());
+    if (prefetch_) prefetch_(x - step_, x + step_);
+    if (!residuals_(x + step_, plus.data()) || !residuals_(x - step_, minus.data())) return false;
+    jacobian_.resize(cache_.size());
+    for (std::size_t i = 0; i < cache_.size(); ++i) jacobian_[i] = (plus[i] - minus[i]) / (2.0 * step_);
+    has_jacobian_ = true;
+    return true;
+  }
+
+  // dr/dx ≈ (r(x_k) − r(x)) / (x_k − x) through a run x_k already made, else x_k = x + h.
+  bool secant(double x) const {
+    std::vector<double> other(cache_.size());
+    double x_other = x + step_;
+    if (!partner_(x, x_other, other.data()) && !residuals_(x_other, other.data())) return false;
+    jacobian_.resize(cache_.size());
+    for (std::size_t i = 0; i < cache_.size(); ++i) jacobian_[i] = (other[i] - cache_[i]) / (x_other - x);
+    has_jacobian_ = true;
+    return true;
+  }
+
   double step_;
   Residuals residuals_;
+  Prefetch prefetch_;
+  SecantPartner partner_;
   mutable std::vector<double> cache_;
   mutable std::vector<double> jacobian_;
   mutable double cached_x_ = 0.0;
@@ -116,8 +146,8 @@ class StopWithinWorkTolerance final : public ceres::IterationCallback {
 
 class Calibration {
  public:
-  Calibration(const LabCurve& lab, const NumericalTriaxial& triaxial, const CalibrationSettings& settings)
-      : lab_(lab), triaxial_(triaxial), settings_(settings) {
+  Calibration(const LabCurve& lab, SpecimenRuns& runs, const CalibrationSettings& settings)
+      : lab_(lab), runs_(runs), settings_(settings) {
     from_ = lab.axial_strain.front();
     to_ = lab.axial_strain.back();
     work_lab_ = dissipated_work_J(lab.axial_strain, lab.deviatoric_stress_Pa, settings.specimen, from_, to_);
@@ -126,6 +156,7 @@ class Calibration {
 
   CalibrationResult run() {
     const auto start = Clock::now();
+    const int runs_before = runs_.runs(), reuses_before = runs_.reuses();
     CalibrationResult result;
     result.mode = settings_.mode;
     result.dissipated_work_lab_J = work_lab_;
@@ -144,12 +175,7 @@ class Calibration {
         settings_.mode == CalibrationMode::dissipated_work ? 1 : static_cast<int>(lab_.axial_strain.size());
     auto residuals = [this](double x, double* r) {
       try {
-        const SpecimenCurve curve = evaluate(std::exp(x));
-        if (settings_.mode == CalibrationMode::dissipated_work) {
-          r[0] = (work_of(curve) - work_lab_) / work_lab_;
-        } else {
-          curve_residuals(curve, r);
-        }
+        residuals_of(evaluate(nearby_run(std::exp(x))), r);
         return true;
       } catch (const PointIntegrationFailure&) {
         // A trial η the element test cannot integrate: Ceres rejects the step and shrinks the region.
@@ -161,9 +187,32 @@ class Calibration {
       }
     };
 
+    // Runs that fail here are run again (and reported) by `residuals`.
+    auto prefetch = [this](double x_minus, double x_plus) {
+      try {
+        const double etas[] = {std::exp(x_minus), std::exp(x_plus)};
+        runs_.run_all(etas);
+      } catch (...) {
+      }
+    };
+    auto partner = [this](double x, double& x_partner, double* r) {
+      const double* eta = secant_partner(x);
+      if (eta == nullptr) return false;
+      x_partner = std::log(*eta);
+      try {
+        residuals_of(evaluate(*eta), r);  // made already: no run
+        return true;
+      } catch (...) {
+        return false;
+      }
+    };
     double x = x_start;
     ceres::Problem problem;
-    problem.AddResidualBlock(new LogEtaCost(residual_count, settings_.derivative_step, residuals), nullptr, &x);
+    problem.AddResidualBlock(
+        settings_.derivative == FitDerivative::secant
+            ? new LogEtaCost(residual_count, settings_.derivative_step, residuals, nullptr, partner)
+            : new LogEtaCost(residual_count, settings_.derivative_step, residuals, prefetch, nullptr),
+        nullptr, &x);
     problem.SetParameterLowerBound(&x, 0, std::log(settings_.eta_min));
     problem.SetParameterUpperBound(&x, 0, std::log(settings_.eta_max));
     ceres::Solver::Options options;
@@ -182,6 +231,13 @@ class Calibration {
     options.parameter_tolerance = settings_.parameter_tolerance;
     options.function_tolerance = 1e-10;
     options.gradient_tolerance = 1e-16;
+    // With bounds, Ceres follows each trust-region step by a projected Armijo line search
+    // (trust_region_minimizer.cc, DoLineSearch) whose trial points are runs of their own. On
+    // a specimen whose W jitters (the MPM's, ±2e-3 at 0.5 cm) Armijo fails on noise and
+    // each rejected step cost up to 3 extra runs (measured: 16 runs in 5 iterations at
+    // 0.5 cm). The secant path drops it: a rejected step shrinks the region, one run each.
+    // The central path keeps Ceres' default, as the element test's fits have always run.
+    if (settings_.derivative == FitDerivative::secant) options.max_num_line_search_step_size_iterations = 0;
     AbortOnPendingException abort(pending_);
     options.callbacks.push_back(&abort);
     StopWithinWorkTolerance within(settings_.work_tolerance);
@@ -198,9 +254,10 @@ class Calibration {
     if (summary.termination_type == ceres::FAILURE || !std::isfinite(x))
       throw CalibrationFailure("the fit of η failed: " + result.termination);
 
-    result.eta = std::exp(x);
+    result.eta = nearby_run(std::exp(x));  // the run Ceres' last point took
+    const double x_fit = std::log(result.eta);
     result.at_bound =
-        std::abs(x - std::log(settings_.eta_min)) < 1e-6 || std::abs(x - std::log(settings_.eta_max)) < 1e-6;
+        std::abs(x_fit - std::log(settings_.eta_min)) < 1e-6 || std::abs(x_fit - std::log(settings_.eta_max)) < 1e-6;
     result.fitted = evaluate(result.eta);
     result.dissipated_work_model_J = work_of(result.fitted);
     result.relative_work_residual = (result.dissipated_work_model_J - work_lab_) / work_lab_;
@@ -210,15 +267,15 @@ class Calibration {
     double squares = 0.0;
     for (double v : r) squares += v * v;
     result.rms_q_error_Pa = q_scale_ * std::sqrt(squares / static_cast<double>(r.size()));
-    result.model_runs = runs_;
+    result.model_runs = runs_.runs() - runs_before;
+    result.reused_runs = runs_.reuses() - reuses_before;
     result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }
 
  private:
-  SpecimenCurve evaluate(double eta) {
-    ++runs_;
-    SpecimenCurve curve = triaxial_(eta);
+  const SpecimenCurve& evaluate(double eta) {
+    const SpecimenCurve& curve = runs_.at(eta);
     const std::size_t n = curve.axial_strain.size();
     if (n < 2 || curve.deviatoric_stress_Pa.size() != n)
       throw CalibrationFailure("the numerical triaxial returned " + std::to_string(n) +
@@ -229,6 +286,42 @@ class Calibration {
                                format(curve.axial_strain.back()) + "], not the lab's [" + format(from_) + ", " +
                                format(to_) + "]: run it to the lab's last strain");
     return curve;
+  }
+
+  void residuals_of(const SpecimenCurve& curve, double* r) const {
+    if (settings_.mode == CalibrationMode::dissipated_work) {
+      r[0] = (work_of(curve) - work_lab_) / work_lab_;
+    } else {
+      curve_residuals(curve, r);
+    }
+  }
+
+  /// The η of the run made nearest to η within the reuse radius in ln η, else η itself.
+  double nearby_run(double eta) const {
+    if (!(settings_.reuse_radius_ln_eta > 0.0) || runs_.has(eta)) return eta;
+    double best = eta, best_distance = settings_.reuse_radius_ln_eta;
+    for (const auto& [made, curve] : runs_.curves()) {
+      const double distance = std::abs(std::log(made / eta));
+      if (distance <= best_distance) {
+        best = made;
+        best_distance = distance;
+      }
+    }
+    return best;
+  }
+
+  /// The η of the run nearest to ln η = x among those at least h away (null: none).
+  const double* secant_partner(double x) const {
+    const double* best = nullptr;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (const auto& [eta, curve] : runs_.curves()) {
+      const double distance = std::abs(std::log(eta) - x);
+      if (distance >= settings_.derivative_step * (1.0 - 1e-9) && distance < best_distance) {
+        best = &eta;
+        best_distance = distance;
+      }
+    }
+    return best;
   }
 
   double work_of(const SpecimenCurve& curve) const {
@@ -246,13 +339,20 @@ class Calibration {
   void scan(CalibrationResult& result) {
     const int n = settings_.scan_points;
     const double lo = std::log(settings_.eta_min), hi = std::log(settings_.eta_max);
+    std::vector<double> etas;
+    for (int k = 0; k < n; ++k) etas.push_back(std::exp(lo + (hi - lo) * k / (n - 1)));
+    etas.front() = settings_.eta_min;  // exactly the bounds, not their rounded exp(log)
+    etas.back() = settings_.eta_max;
+    for (double eta : settings_.scan_extra_eta)
+      if (eta >= settings_.eta_min && eta <= settings_.eta_max) etas.push_back(eta);
+    std::sort(etas.begin(), etas.end());
+    etas.erase(std::unique(etas.begin(), etas.end()), etas.end());
+    runs_.run_all(etas);  // side by side
     std::vector<double> r(lab_.axial_strain.size());
-    for (int k = 0; k < n; ++k) {
+    for (double eta : etas) {
       WorkSample s;
-      s.eta = std::exp(lo + (hi - lo) * k / (n - 1));
-      if (k == n - 1) s.eta = settings_.eta_max;  // exactly the bound, not its rounded exp(log)
-      if (k == 0) s.eta = settings_.eta_min;
-      const SpecimenCurve curve = evaluate(s.eta);
+      s.eta = eta;
+      const SpecimenCurve& curve = evaluate(s.eta);
       s.work_J = work_of(curve);
       curve_residuals(curve, r.data());
       for (double v : r) s.sum_of_squares += v * v;
@@ -263,7 +363,8 @@ class Calibration {
       if (!(result.scan[k].work_J < result.scan[k - 1].work_J)) result.work_decreases_with_eta = false;
   }
 
-  /// ln η where the scan's W crosses W_lab (log-linear between the bracketing samples).
+  /// ln η where the scan's W crosses W_lab: the monotone cubic through W(ln η) at the
+  /// scan's points (calibration/monotone_crossing.hpp).
   double work_start(const CalibrationResult& result) const {
     const WorkSample& slowest = result.scan.front();
     const WorkSample& fastest = result.scan.back();
@@ -278,15 +379,12 @@ class Calibration {
                                " J, less than the model with " + "the fastest softening, W(η = " + format(fastest.eta) +
                                ") = " + format(fastest.work_J) + " J: no " + bounds +
                                " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
-    for (std::size_t k = 1; k < result.scan.size(); ++k) {
-      const WorkSample& a = result.scan[k - 1];
-      const WorkSample& b = result.scan[k];
-      if ((a.work_J - work_lab_) * (b.work_J - work_lab_) <= 0.0) {
-        const double w = a.work_J == b.work_J ? 0.5 : (work_lab_ - a.work_J) / (b.work_J - a.work_J);
-        return std::log(a.eta) + w * (std::log(b.eta) - std::log(a.eta));
-      }
+    std::vector<double> x, w;
+    for (const WorkSample& s : result.scan) {
+      x.push_back(std::log(s.eta));
+      w.push_back(s.work_J);
     }
-    return std::log(slowest.eta);  // unreachable: the ends bracket W_lab
+    return monotone_crossing(x, w, work_lab_);  // the ends bracket W_lab: a crossing exists
   }
 
   double curve_start(const CalibrationResult& result) const {
@@ -297,18 +395,24 @@ class Calibration {
   }
 
   const LabCurve& lab_;
-  const NumericalTriaxial& triaxial_;
+  SpecimenRuns& runs_;
   const CalibrationSettings& settings_;
   double from_ = 0.0, to_ = 0.0;
   double work_lab_ = 0.0;
   double q_scale_ = 1.0;
-  int runs_ = 0;
   std::exception_ptr pending_;
 };
 
 }  // namespace
 
 CalibrationResult calibrate_softening_factor(const LabCurve& lab, const NumericalTriaxial& triaxial,
+                                             const CalibrationSettings& settings) {
+  if (!triaxial) throw std::invalid_argument("calibrate_softening_factor: no numerical triaxial");
+  SpecimenRuns runs(triaxial);
+  return calibrate_softening_factor(lab, runs, settings);
+}
+
+CalibrationResult calibrate_softening_factor(const LabCurve& lab, SpecimenRuns& runs,
                                              const CalibrationSettings& settings) {
   if (!(settings.eta_min > 0.0 && settings.eta_max > settings.eta_min))
     throw std::invalid_argument("calibrate_softening_factor: needs 0 < eta_min < eta_max");
@@ -321,11 +425,10 @@ CalibrationResult calibrate_softening_factor(const LabCurve& lab, const Numerica
     throw std::invalid_argument("calibrate_softening_factor: parameter_tolerance must be in (0, 1)");
   if (!(settings.work_tolerance >= 0.0 && settings.work_tolerance < 1.0))
     throw std::invalid_argument("calibrate_softening_factor: work_tolerance must be in [0, 1)");
-  if (!triaxial) throw std::invalid_argument("calibrate_softening_factor: no numerical triaxial");
   if (settings.eta_start && !(*settings.eta_start >= settings.eta_min && *settings.eta_start <= settings.eta_max))
     throw std::invalid_argument("calibrate_softening_factor: eta_start must lie in [eta_min, eta_max]");
   check_lab_curve(lab);
-  return Calibration(lab, triaxial, settings).run();
+  return Calibration(lab, runs, settings).run();
 }
 
 }  // namespace ffp

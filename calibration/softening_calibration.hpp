@@ -4,7 +4,7 @@
 ///
 /// Two criteria, one parameter, both solved by Ceres on x = ln η with the box
 /// ln η_min ≤ x ≤ ln η_max (central numeric differences of the numerical
-/// triaxial):
+/// triaxial, or secants through runs already made):
 ///
 /// - dissipated_work (the paper's): the smeared-crack idea (Rots et al. 1985) —
 ///   the area under the axial force–displacement curve of the numerical
@@ -18,6 +18,10 @@
 ///   be matched inside the bounds (CalibrationFailure).
 /// - curve_least_squares (for comparison): r_i = (q_model(ε_i) − q_lab(ε_i)) /
 ///   q_peak,lab at every lab strain ε_i, the model curve interpolated linearly.
+///
+/// No η is run twice (calibration/specimen_runs.hpp): the fit's trial points,
+/// derivatives and final curve reuse the scan's runs and each other's, and a
+/// caller's SpecimenRuns carries them on to a second fit or extra curves.
 ///
 /// W_lab and W_model are both ∫F dδ, the piston's deviatoric work. What the
 /// law dissipates (plastic work) differs from it by the elastic energy still
@@ -35,6 +39,7 @@
 
 #include "calibration/lab_curve.hpp"
 #include "calibration/numerical_triaxial.hpp"
+#include "calibration/specimen_runs.hpp"
 #include "drivers/triaxial_test.hpp"
 
 namespace ffp {
@@ -49,6 +54,23 @@ inline std::string to_string(CalibrationMode mode) {
   return std::string(std::ranges::find(kCalibrationModeNames, mode, &CalibrationModeName::first)->second);
 }
 
+/// How the fit gets dr/d ln η at a point x.
+enum class FitDerivative {
+  /// (r(x + h) − r(x − h)) / 2h: two runs a point (side by side with concurrency).
+  central,
+  /// The secant through x and the run already made nearest to x but at least h
+  /// away (the scan's, the fit's earlier points): no run, unless none is made yet
+  /// (then one at x ± h). For a specimen whose runs cost minutes: Ceres then
+  /// makes one run per iteration instead of three.
+  secant
+};
+using FitDerivativeName = std::pair<FitDerivative, std::string_view>;
+inline constexpr auto kFitDerivativeNames =
+    std::to_array<FitDerivativeName>({{FitDerivative::central, "central"}, {FitDerivative::secant, "secant"}});
+inline std::string to_string(FitDerivative derivative) {
+  return std::string(std::ranges::find(kFitDerivativeNames, derivative, &FitDerivativeName::first)->second);
+}
+
 struct CalibrationSettings {
   CalibrationMode mode = CalibrationMode::dissipated_work;
   double eta_min = 0.1;
@@ -56,14 +78,24 @@ struct CalibrationSettings {
   /// Where Ceres starts. Unset: from the scan — where its W crosses W_lab
   /// (log-linear), or its point of least squares for the curve criterion.
   std::optional<double> eta_start;
-  int scan_points = 9;      ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
+  int scan_points = 9;  ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
+  /// η the scan runs as well (those inside the bounds): curves the caller draws
+  /// anyway (a scene's compare_eta), so their runs also bracket W_lab.
+  std::vector<double> scan_extra_eta;
+  FitDerivative derivative = FitDerivative::central;
   int max_iterations = 50;  ///< Ceres iterations
-  /// Step in ln η of the central differences. It must be large enough that the
+  /// Step h in ln η of the central differences (and the secant's least span). It must be large enough that the
   /// numerical triaxial's noise is small against W'·step: the element test's W is
   /// smooth to ~1e-10 (1e-4 is plenty); a dynamic MPM specimen's W jitters from
   /// one η to the next, by ~1e-5 relative at 2 cm and up to ±2e-3 at 0.5 cm,
   /// against W' ≈ 0.04 W per unit ln η near the match (0.1 lifts the slope above it).
   double derivative_step = 1e-4;
+  /// A trial η within this distance in ln η of a run already made takes that run (0: only
+  /// the same η). Below the specimen's noise a nearer run tells nothing new: at 0.5 cm W
+  /// jitters by ±2e-3, i.e. ±0.025 in ln η at W' ≈ 0.08 W per unit ln η, and Ceres, once
+  /// a step fails on that noise, shrinks its region to steps of 1e-5 in ln η, a run each.
+  /// The fitted η is then the η of the run it took (0.5 % at most from Ceres' point with 0.005).
+  double reuse_radius_ln_eta = 0.0;
   /// Ceres' parameter tolerance: the fit stops when a step changes ln η by less
   /// than this (relative). 1e-8 for the element test; an MPM specimen's noise
   /// makes anything below ~1e-4 a random walk.
@@ -93,14 +125,15 @@ struct CalibrationResult {
   double rms_q_error_Pa = 0.0;                  ///< model against lab at the lab's strains
   double displacement_range_m[2] = {0.0, 0.0};  ///< the lab's δ range both works cover
   int iterations = 0;                           ///< Ceres iterations (successful + unsuccessful steps)
-  int model_runs = 0;                           ///< numerical triaxials run, scan and derivatives included
-  std::string termination;                      ///< Ceres' termination type and message
-  bool converged = false;                       ///< Ceres reported CONVERGENCE (or the work tolerance was met)
-  bool at_bound = false;                        ///< η within 1e-6 (relative) of η_min or η_max
-  double wall_time_s = 0.0;                     ///< the whole calibration, scan included
-  std::vector<WorkSample> scan;                 ///< W(η) on the log-spaced scan
-  bool work_decreases_with_eta = false;         ///< W strictly decreasing along the scan
-  SpecimenCurve fitted;                         ///< the response at the fitted η
+  int model_runs = 0;        ///< numerical triaxials this fit ran, scan and derivatives included (each η once)
+  int reused_runs = 0;       ///< requests answered by a run already made (this fit's or the SpecimenRuns' earlier ones)
+  std::string termination;   ///< Ceres' termination type and message
+  bool converged = false;    ///< Ceres reported CONVERGENCE (or the work tolerance was met)
+  bool at_bound = false;     ///< η within 1e-6 (relative) of η_min or η_max
+  double wall_time_s = 0.0;  ///< the whole calibration, scan included
+  std::vector<WorkSample> scan;          ///< W(η) on the scan, ascending η (log-spaced and extra η)
+  bool work_decreases_with_eta = false;  ///< W strictly decreasing along the scan
+  SpecimenCurve fitted;                  ///< the response at the fitted η
 };
 
 /// The calibration cannot be done as asked (W_lab outside the bounds' range, the
@@ -113,6 +146,9 @@ class CalibrationFailure : public std::runtime_error {
 /// `lab` must pass check_lab_curve. Throws CalibrationFailure, or
 /// std::invalid_argument for settings out of range.
 CalibrationResult calibrate_softening_factor(const LabCurve& lab, const NumericalTriaxial& triaxial,
+                                             const CalibrationSettings& settings);
+/// The same, on runs that may have been made already (and that keep this fit's).
+CalibrationResult calibrate_softening_factor(const LabCurve& lab, SpecimenRuns& runs,
                                              const CalibrationSettings& settings);
 
 /// W = ∫ F dδ = A·H ∫ q dε_a over ε_a ∈ [from, to], trapezoid on the given points.

@@ -2,9 +2,12 @@
 /// (calibration/softening_calibration.hpp) on the scene's numerical triaxial,
 /// the other mode's fit and the compare_eta curves. The keys are read in
 /// calibration_scene.hpp; calibration_output.hpp writes the results.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <mutex>
 #include <ostream>
+#include <thread>
 
 #include "drivers/app/calibration_output.hpp"
 #include "drivers/app/calibration_scene.hpp"
@@ -44,28 +47,35 @@ class CalibrationJob : public Job {
   }
 
   void run(RunContext& context) override {
-    const NumericalTriaxial triaxial =
-        spec_.specimen == SpecimenType::element
-            ? element_test_triaxial(spec_.material, spec_.test)
-            : mpm_triaxial_specimen(spec_.material, spec_.mpm, [this](double eta, const MpmTriaxialResult& r) {
-                record(eta, r);
-                // Ctrl-C waits for one run at most (≤ ~15 s at 0.5 cm).
-                throw_if_interrupted();
-              });
-    const CalibrationResult result = calibrate(triaxial, spec_.settings);
+    const bool mpm = spec_.specimen == SpecimenType::mpm;
+    const NumericalTriaxial triaxial = mpm ? mpm_triaxial_specimen(spec_.material, spec_.mpm,
+                                                                   [this](double eta, const MpmTriaxialResult& r) {
+                                                                     record(eta, r);
+                                                                     // Ctrl-C waits for one run at most (≤ ~15 s at 0.5
+                                                                     // cm).
+                                                                     throw_if_interrupted();
+                                                                   })
+                                           : element_test_triaxial(spec_.material, spec_.test);
+    // One store of runs for both fits and the compare_eta curves: no η runs twice. The
+    // MPM specimen's runs go side by side (--jobs, default one per core); the element
+    // test's take milliseconds and stay on this thread.
+    const int concurrency = !mpm               ? 1
+                            : context.jobs > 0 ? context.jobs
+                                               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    SpecimenRuns runs(triaxial, concurrency);
+    const CalibrationResult result = calibrate(runs, spec_.settings);
     throw_if_interrupted();
     std::optional<CalibrationResult> second;
     if (spec_.compare_modes) {
       CalibrationSettings s = spec_.settings;
       s.mode = other(s.mode);
-      second = calibrate(triaxial, s);
+      second = calibrate(runs, s);
     }
     std::vector<std::pair<double, SpecimenCurve>> compared;
-    for (double eta : spec_.compare_eta) compared.emplace_back(eta, run_specimen(triaxial, eta));
+    run_specimens(runs, spec_.compare_eta);
+    for (double eta : spec_.compare_eta) compared.emplace_back(eta, runs.at(eta));
     if (spec_.specimen == SpecimenType::element) {
-      context.steps =
-          static_cast<long>(result.model_runs + (second ? second->model_runs : 0) + static_cast<int>(compared.size())) *
-          spec_.test.increments;
+      context.steps = static_cast<long>(runs.runs()) * spec_.test.increments;
     } else {
       context.steps = 0;
       for (const MpmRunRecord& r : runs_) context.steps += r.steps;
@@ -80,16 +90,17 @@ class CalibrationJob : public Job {
                    format_significant(result.eta).c_str(), format_significant(spec_.settings.eta_min).c_str(),
                    format_significant(spec_.settings.eta_max).c_str());
 
-    CalibrationOutcome outcome{result, std::move(second), std::move(compared), runs_, grid_};
+    CalibrationOutcome outcome{result, std::move(second), std::move(compared), runs_,
+                               grid_,  runs.runs(),       runs.concurrency()};
     write_calibration_summary(spec_, outcome, context.summary);
     write_calibration_tables(spec_, outcome, context.out_dir);
     write_calibration_plots(spec_, outcome, context.out_dir);
   }
 
  private:
-  CalibrationResult calibrate(const NumericalTriaxial& triaxial, const CalibrationSettings& settings) const {
+  CalibrationResult calibrate(SpecimenRuns& runs, const CalibrationSettings& settings) const {
     try {
-      return calibrate_softening_factor(spec_.lab, triaxial, settings);
+      return calibrate_softening_factor(spec_.lab, runs, settings);
     } catch (const CalibrationFailure& e) {
       throw RunFailure(std::string("calibration (") + to_string(settings.mode) + "): " + e.what());
     } catch (const PointIntegrationFailure& e) {
@@ -101,17 +112,24 @@ class CalibrationJob : public Job {
     }
   }
 
-  static SpecimenCurve run_specimen(const NumericalTriaxial& triaxial, double eta) {
+  static void run_specimens(SpecimenRuns& runs, const std::vector<double>& etas) {
+    // run_all rethrows the first failure in the order of etas: the first η still not run.
+    auto failed = [&] {
+      const auto eta = std::find_if(etas.begin(), etas.end(), [&](double e) { return !runs.has(e); });
+      return eta == etas.end() ? std::string("?") : format_significant(*eta);
+    };
     try {
-      return triaxial(eta);
+      runs.run_all(etas);
     } catch (const PointIntegrationFailure& e) {
-      throw RunFailure("calibration: the element test with η = " + format_significant(eta) + " failed: " + e.what());
+      throw RunFailure("calibration: the element test with η = " + failed() + " failed: " + e.what());
     } catch (const mpm::StepFailure& e) {
-      throw RunFailure("calibration: the MPM specimen with η = " + format_significant(eta) + " failed: " + e.what());
+      throw RunFailure("calibration: the MPM specimen with η = " + failed() + " failed: " + e.what());
     }
   }
 
+  // Called from the runs' threads.
   void record(double eta, const MpmTriaxialResult& r) {
+    const std::lock_guard lock(record_mutex_);
     MpmRunRecord k;
     k.eta = eta;
     k.steps = r.steps;
@@ -130,6 +148,7 @@ class CalibrationJob : public Job {
   }
 
   CalibrationScene spec_;
+  std::mutex record_mutex_;
   std::vector<MpmRunRecord> runs_;
   SpecimenGrid grid_;
 };

@@ -85,6 +85,7 @@ json fit_json(const CalibrationResult& r) {
           {"rms_q_error_kPa", 1e-3 * r.rms_q_error_Pa},
           {"iterations", r.iterations},
           {"model_runs", r.model_runs},
+          {"reused_runs", r.reused_runs},
           {"termination", r.termination},
           {"converged", r.converged},
           {"at_bound", r.at_bound},
@@ -107,6 +108,11 @@ void write_calibration_summary(const CalibrationScene& scene, const CalibrationO
   s["displacement_range_m"] = {r.displacement_range_m[0], r.displacement_range_m[1]};
   s["iterations"] = r.iterations;
   s["model_runs"] = r.model_runs;
+  s["reused_runs"] = r.reused_runs;
+  s["specimen_runs"] = o.specimen_runs;
+  s["concurrent_runs"] = o.concurrent_runs;
+  s["derivative"] = to_string(scene.settings.derivative);
+  s["fit_start"] = to_string(scene.fit_start);
   s["termination"] = r.termination;
   s["converged"] = r.converged;
   s["at_bound"] = r.at_bound;

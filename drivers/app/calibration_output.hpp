@@ -41,6 +41,8 @@ struct CalibrationOutcome {
   std::vector<std::pair<double, SpecimenCurve>> compared;  ///< the compare_eta curves
   std::vector<MpmRunRecord> runs;                          ///< every MPM specimen run, in order (mpm only)
   SpecimenGrid grid;                                       ///< mpm only
+  int specimen_runs = 0;    ///< numerical triaxials run in all (fits and compare_eta; each η once)
+  int concurrent_runs = 1;  ///< at most this many side by side
 };
 
 void write_calibration_summary(const CalibrationScene& scene, const CalibrationOutcome& outcome,

@@ -15,6 +15,10 @@ std::string to_string(SpecimenType type) {
   return std::string(std::ranges::find(kSpecimenTypeNames, type, &SpecimenTypeName::first)->second);
 }
 
+std::string to_string(FitStart start) {
+  return std::string(std::ranges::find(kFitStartNames, start, &FitStartName::first)->second);
+}
+
 std::string format_significant(double v, int digits) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
@@ -86,7 +90,6 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
     scene.fail("material.eta", "is where the fit starts: must lie in [eta_min, eta_max] = [" +
                                    format_significant(spec.settings.eta_min) + ", " +
                                    format_significant(spec.settings.eta_max) + "]");
-  spec.settings.eta_start = spec.eta_start;
   spec.compare_eta =
       scene.optional_numbers("compare_eta", Range::positive(1e4), 0, 5).value_or(std::vector<double>{2.5, 15.0});
 
@@ -116,13 +119,23 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
   }
   // The second fit doubles the cost: on by default only for the (cheap) element test.
   spec.compare_modes = scene.boolean("compare_modes", !mpm_specimen);
-  spec.settings.scan_points = scene.integer("scan_points", 2, 1000, 9);
+  // A meshed specimen's run costs seconds to minutes: by default it scans the bounds, their
+  // geometric mean and the compare_eta (run anyway), starts where that scan crosses W_lab
+  // and takes its slopes from runs already made (one run per Ceres iteration).
+  spec.settings.scan_points = scene.integer("scan_points", 2, 1000, mpm_specimen ? 3 : 9);
+  spec.fit_start = scene.choice("fit_start", kFitStartNames, mpm_specimen ? FitStart::scan : FitStart::material_eta);
+  if (spec.fit_start == FitStart::material_eta) spec.settings.eta_start = spec.eta_start;
+  spec.settings.scan_extra_eta = spec.compare_eta;
+  spec.settings.derivative =
+      scene.choice("derivative", kFitDerivativeNames, mpm_specimen ? FitDerivative::secant : FitDerivative::central);
   spec.settings.max_iterations = scene.integer("max_iterations", 1, 10000, 50);
   spec.settings.derivative_step =
       scene.number("derivative_step_ln_eta", Range::positive(0.5), mpm_specimen ? 0.1 : 1e-4);
   spec.settings.parameter_tolerance =
       scene.number("parameter_tolerance", Range::open(0.0, 1.0), mpm_specimen ? 1e-4 : 1e-8);
   spec.settings.work_tolerance = scene.number("work_tolerance", Range::half_open(0.0, 1.0), mpm_specimen ? 2e-4 : 0.0);
+  spec.settings.reuse_radius_ln_eta =
+      scene.number("reuse_radius_ln_eta", Range::closed(0.0, 0.5), mpm_specimen ? 0.005 : 0.0);
 
   spec.fitted_peak_friction = scene.boolean("fit_peak_friction", false);
   if (spec.fitted_peak_friction) {

@@ -35,7 +35,15 @@
 ///       radial_margin       empty grid beyond the radius, fraction of it (default 0.5)
 ///                        Each key belongs to one type: an element scene with mpm keys (or
 ///                        the other way round) is bad input.
-///   scan_points          log-spaced η of the W(η) check (default 9)
+///   scan_points          log-spaced η of the W(η) check, the bounds included (default: element
+///                        9; mpm 3); the compare_eta inside the bounds are scanned as well
+///   fit_start            where Ceres starts: material_eta | scan, where the scan's W crosses
+///                        W_lab (log-linear; default: element material_eta; mpm scan)
+///   derivative           the fit's dr/d ln η: central (two runs a point) | secant (through the
+///                        run made nearest, at least derivative_step_ln_eta away: no run; default:
+///                        element central; mpm secant)
+///   reuse_radius_ln_eta  a trial η this near (in ln η) to a run made takes that run (default:
+///                        element 0, only the same η; mpm 0.005 — below the MPM's jitter)
 ///   max_iterations       Ceres iterations (default 50)
 ///   derivative_step_ln_eta  central-difference step of the fit in ln η (default: element
 ///                        1e-4; mpm 0.1 — the MPM's W jitters by up to ±0.2 % between
@@ -60,6 +68,13 @@
 
 namespace ffp {
 
+/// Where the fit starts (`fit_start`).
+enum class FitStart { material_eta, scan };
+using FitStartName = std::pair<FitStart, std::string_view>;
+inline constexpr auto kFitStartNames =
+    std::to_array<FitStartName>({{FitStart::material_eta, "material_eta"}, {FitStart::scan, "scan"}});
+std::string to_string(FitStart start);
+
 /// The numerical triaxial the calibration fits with (`specimen.type`).
 enum class SpecimenType { element, mpm };
 using SpecimenTypeName = std::pair<SpecimenType, std::string_view>;
@@ -72,7 +87,8 @@ struct CalibrationScene {
   LabCurve lab;
   StrainSofteningParameters material;  ///< φ'_p replaced by the lab peak's with fit_peak_friction
   bool fitted_peak_friction = false;
-  double eta_start = 8.0;
+  double eta_start = 8.0;  ///< material.eta (where the fit starts with fit_start = material_eta)
+  FitStart fit_start = FitStart::material_eta;
   SpecimenType specimen = SpecimenType::element;
   TriaxialTestConfig test;  ///< the element test (σ3 and the specimen's size serve both types)
   MpmTriaxialConfig mpm;    ///< the MPM specimen (type mpm)

@@ -45,7 +45,8 @@ void add_run(CLI::App& app, RunOptions& o) {
   add_scene(run, o);
   run.add_option("--out", o.out, "output folder (default results/<scene name>)")->type_name("DIR");
   run.add_flag("--force", o.force, "replace an --out folder that holds files ffp did not write");
-  run.add_option("--jobs", o.jobs, "an inverse fit's model runs at once (default one per core)")
+  run.add_option("--jobs", o.jobs,
+                 "an inverse fit's or a meshed calibration's model runs at once (default one per core)")
       ->check(CLI::Range(1, 64));
   add_scheduler(run, o.slurm, "where an inverse fit's model runs go: local (default) or slurm (job arrays)");
 }

@@ -79,6 +79,12 @@ TEST_CASE("calibration reader: calibration_dr15 is the paper's element-test fit 
   CHECK(c.settings.derivative_step == 1e-4);
   CHECK(c.settings.parameter_tolerance == 1e-8);
   CHECK(c.settings.work_tolerance == 0.0);
+  // The element test's fit as it always was: from material.eta, central differences, 9-point scan.
+  CHECK(c.fit_start == FitStart::material_eta);
+  CHECK(c.settings.eta_start == 8.0);
+  CHECK(c.settings.derivative == FitDerivative::central);
+  CHECK(c.settings.scan_points == 9);
+  CHECK(c.settings.scan_extra_eta == c.compare_eta);
   CHECK(c.material.friction_peak_rad == Approx(40.0 * kDegree));
   CHECK_FALSE(c.fitted_peak_friction);
 }
@@ -99,6 +105,16 @@ TEST_CASE("calibration reader: calibration_dr15_mpm_2cm is the meshed specimen w
   CHECK(c.settings.derivative_step == 0.1);
   CHECK(c.settings.parameter_tolerance == 1e-4);
   CHECK(c.settings.work_tolerance == 2e-4);
+  // The meshed fit's fewer runs: 3-point scan (plus compare_eta), from its crossing, secants.
+  CHECK(c.fit_start == FitStart::scan);
+  CHECK_FALSE(c.settings.eta_start.has_value());
+  CHECK(c.settings.derivative == FitDerivative::secant);
+  CHECK(c.settings.scan_points == 3);
+  const CalibrationScene old_path =
+      calibration("calibration_dr15_mpm_2cm", {"fit_start=material_eta", "derivative=central", "scan_points=9"});
+  CHECK(old_path.settings.eta_start == 8.0);
+  CHECK(old_path.settings.derivative == FitDerivative::central);
+  CHECK(old_path.settings.scan_points == 9);
   CHECK(calibration("calibration_dr15_mpm_2cm", {"specimen.platens=smooth", "specimen.shape_function=linear"})
             .mpm.platens == PlatenFriction::smooth);
   CHECK(calibration("calibration_dr15", {"mode=curve_least_squares"}).settings.mode ==
@@ -110,6 +126,10 @@ TEST_CASE("calibration reader: a bad key names itself and what it may be", "[app
         "mode: 'least' is not allowed: must be one of: dissipated_work, curve_least_squares");
   CHECK(calibration_error("calibration_dr15", "eta_min=-1") ==
         "eta_min: = -1 is out of range: must be > 0 and ≤ 10000");
+  CHECK(calibration_error("calibration_dr15", "derivative=forward") ==
+        "derivative: 'forward' is not allowed: must be one of: central, secant");
+  CHECK(calibration_error("calibration_dr15", "fit_start=middle") ==
+        "fit_start: 'middle' is not allowed: must be one of: material_eta, scan");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.platens=sticky") ==
         "specimen.platens: 'sticky' is not allowed: must be one of: rough, smooth");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.shape_function=quad") ==
