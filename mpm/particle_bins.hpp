@@ -58,6 +58,22 @@ struct ParticleBins {
     }
   }
 
+  /// fn(strip, particles) strip by strip, `particles` the strip's slice of
+  /// `order`, scatter-safe as scatter() (even strips in parallel, then odd):
+  /// for a pass that first sums the strip's own cells, then scatters its particles.
+  template <class Fn>
+  void scatter_strips(Fn&& fn) const {
+    const int n = strips();
+    for (int colour = 0; colour < 2; ++colour) {
+      FFP_OMP(omp parallel for schedule(dynamic, 1) if (order.size() >= kParallelMinimum))
+      for (int s = colour; s < n; s += 2) {
+        const std::size_t first = offsets[static_cast<std::size_t>(s)];
+        const std::size_t last = offsets[static_cast<std::size_t>(s) + 1];
+        fn(s, std::span<const std::uint32_t>(order.data() + first, last - first));
+      }
+    }
+  }
+
   /// fn(strip, particles) for every strip at once, `particles` the strip's
   /// slice of `order`: for sums into cells (which no two strips share) and for
   /// a second pass over the same particles that reads those sums, both in one

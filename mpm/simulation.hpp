@@ -83,6 +83,7 @@ class Simulation {
   std::vector<std::uint32_t>
       cell;  ///< each particle's grid cell (apart from its weights: the cell means read only this)
   std::vector<Voigt> strain_increment;  ///< Δε_p this step (Voigt)
+  bool internal_forces_mapped = false;  ///< map_particles_to_grid made f_i^int (and the cell means) too
   bool momentum_remapped = false;  ///< update_particles summed p_i = Σ S m v^{n+1} (MUSL) for map_velocities_to_grid
   std::vector<double> spin_dt;     ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
   /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.

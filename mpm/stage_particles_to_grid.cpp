@@ -1,6 +1,7 @@
 /// Particle → grid transfers. Each scatter runs through ParticleBins, so every
 /// nodal sum has one fixed order (deterministic under OpenMP).
 #include <algorithm>
+#include <span>
 
 #include "mpm/stages.hpp"
 
@@ -32,28 +33,71 @@ void scatter_mass_momentum(Simulation& s) {
   });
 }
 
+/// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle (σ_p with
+/// its cell's mean stress under strain smoothing).
+template <int S>
+inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, bool smoothed,
+                               const std::vector<double>& limit) {
+  const Particles& P = s.particles;
+  const ShapeWeights& w = s.weights[p];
+  Voigt sig = P.stress[p];
+  if (smoothed &&
+      takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
+    const double shift = s.cell_mean_stress[s.cell[p] * s.bodies.size() + P.body[p]] - trace(sig) / 3.0;
+    sig[0] += shift;
+    sig[1] += shift;
+    sig[2] += shift;
+  }
+  const double V = P.volume[p], hoop = sig[2] * w.inverse_r;
+  for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {
+    f.internal_force_r[i] -= V * (sig[0] * Gr + sig[3] * Gz + hoop * N);
+    f.internal_force_z[i] -= V * (sig[3] * Gr + sig[1] * Gz);
+  });
+}
+
 template <int S>
 void scatter_internal_forces(Simulation& s) {
-  const Particles& P = s.particles;
   const bool smoothed = s.settings.strain_smoothing;
-  const std::size_t bodies = s.bodies.size();
   const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
   s.bins.scatter([&](std::size_t p) {
-    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-    const ShapeWeights& w = s.weights[p];
-    Voigt sig = P.stress[p];
-    if (smoothed &&
-        takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
-      const double shift = s.cell_mean_stress[s.cell[p] * bodies + P.body[p]] - trace(sig) / 3.0;
-      sig[0] += shift;
-      sig[1] += shift;
-      sig[2] += shift;
+    add_internal_force<S>(s, p, s.grid.fields[s.bodies[s.particles.body[p]].field], smoothed, limit);
+  });
+}
+
+/// map_particles_to_grid, smooth_mean_stress and compute_internal_forces in one
+/// pass over the particles, strip by strip: the strip's cell means (its cells are
+/// its own), then per particle its mass, momentum and internal-force terms. Every
+/// nodal sum and cell sum takes its terms in the same order as the three stages
+/// apart (ParticleBins order), so the results are the same bit for bit.
+template <int S>
+void scatter_mass_momentum_forces(Simulation& s) {
+  const Particles& P = s.particles;
+  const bool smoothed = s.settings.strain_smoothing;
+  const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
+  if (smoothed) clear_cell_mean_stress(s);
+  s.bins.scatter_strips([&](int strip, std::span<const std::uint32_t> particles) {
+    if (smoothed) strip_cell_mean_stress(s, strip, particles, limit);
+    for (const std::uint32_t p : particles) {
+      NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+      const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
+      for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
+        f.mass[i] += N * m;
+        f.momentum_r[i] += N * pr;
+        f.momentum_z[i] += N * pz;
+      });
+      add_internal_force<S>(s, p, f, smoothed, limit);
     }
-    const double V = P.volume[p], hoop = sig[2] * w.inverse_r;
-    for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {
-      f.internal_force_r[i] -= V * (sig[0] * Gr + sig[3] * Gz + hoop * N);
-      f.internal_force_z[i] -= V * (sig[3] * Gr + sig[1] * Gz);
-    });
+  });
+}
+
+/// The three stages may run as one pass only if nothing else runs between them.
+bool forces_fuse_with_mapping(const Simulation& s) {
+  const std::vector<Stage>& stages = s.stages.items();
+  const auto first = std::ranges::find(stages, "map_particles_to_grid", &Stage::name);
+  const auto last = std::ranges::find(stages, "compute_internal_forces", &Stage::name);
+  if (first == stages.end() || last == stages.end() || last < first) return false;
+  return std::all_of(first + 1, last, [&](const Stage& stage) {
+    return stage.name == "smooth_mean_stress" && s.settings.strain_smoothing;
   });
 }
 
@@ -79,8 +123,17 @@ void reset_grid(Simulation& s) {
 }
 
 // m_i = Σ_p S_ip m_p ;  p_i = Σ_p S_ip m_p v_p
+// (and, when the stage list runs smooth_mean_stress and compute_internal_forces
+// right after, those two as well, in the same pass: scatter_mass_momentum_forces)
 void map_particles_to_grid(Simulation& s) {
-  if (linear(s)) {
+  s.internal_forces_mapped = forces_fuse_with_mapping(s);
+  if (s.internal_forces_mapped) {
+    if (linear(s)) {
+      scatter_mass_momentum_forces<2>(s);
+    } else {
+      scatter_mass_momentum_forces<3>(s);
+    }
+  } else if (linear(s)) {
     scatter_mass_momentum<2>(s);
   } else {
     scatter_mass_momentum<3>(s);
@@ -91,6 +144,10 @@ void map_particles_to_grid(Simulation& s) {
 // the hoop term is the σ_θθ/r part of div σ in cylindrical coordinates).
 // With strain smoothing σ_p carries its cell's mean stress (smooth_mean_stress).
 void compute_internal_forces(Simulation& s) {
+  if (s.internal_forces_mapped) {  // made by map_particles_to_grid
+    s.internal_forces_mapped = false;
+    return;
+  }
   if (linear(s)) {
     scatter_internal_forces<2>(s);
   } else {

@@ -48,23 +48,32 @@ void smooth_volumetric_strain(Simulation& s) {
 // discrete stiffness unsymmetric; measured here, a ν = 0.49 block then gains energy
 // even at Courant 0.5, and with both halves it is stable at Courant 1 (linear and GIMP).
 void smooth_mean_stress(Simulation& s) {
-  const Particles& P = s.particles;
-  const std::size_t bodies = s.bodies.size();
-  const std::size_t slots = s.grid.cells() * bodies;
+  if (s.internal_forces_mapped) return;  // map_particles_to_grid made the means with the forces
   const std::vector<double> limit = cell_mean_density_limits(s);
+  clear_cell_mean_stress(s);
+  s.bins.for_each_strip(
+      [&](int strip, std::span<const std::uint32_t> particles) { strip_cell_mean_stress(s, strip, particles, limit); });
+}
+
+void clear_cell_mean_stress(Simulation& s) {
+  const std::size_t slots = s.grid.cells() * s.bodies.size();
   s.cell_volume.assign(slots, 0.0);
   s.cell_mean_stress.assign(slots, 0.0);
-  s.bins.for_each_strip([&](int strip, std::span<const std::uint32_t> particles) {
-    for (const std::uint32_t p : particles) {
-      if (!takes_part_in_cell_means(P, p, limit)) continue;
-      const std::size_t k = s.cell[p] * bodies + P.body[p];
-      s.cell_volume[k] += P.volume[p];
-      s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
-    }
-    s.bins.for_each_cell_of_strip(strip, [&](std::size_t cell) {
-      for (std::size_t k = cell * bodies; k < (cell + 1) * bodies; ++k)
-        if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
-    });
+}
+
+void strip_cell_mean_stress(Simulation& s, int strip, std::span<const std::uint32_t> particles,
+                            const std::vector<double>& limit) {
+  const Particles& P = s.particles;
+  const std::size_t bodies = s.bodies.size();
+  for (const std::uint32_t p : particles) {
+    if (!takes_part_in_cell_means(P, p, limit)) continue;
+    const std::size_t k = s.cell[p] * bodies + P.body[p];
+    s.cell_volume[k] += P.volume[p];
+    s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
+  }
+  s.bins.for_each_cell_of_strip(strip, [&](std::size_t cell) {
+    for (std::size_t k = cell * bodies; k < (cell + 1) * bodies; ++k)
+      if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
   });
 }
 

@@ -2,6 +2,10 @@
 /// The stages of the explicit step, in their usual order. Each is short
 /// enough to read whole; each transfer opens with the formula it implements.
 /// Notation: S_ip, G_ip = ∇S_ip particle–node weights; m, V per radian.
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include "mpm/simulation.hpp"
 
 namespace ffp::mpm {
@@ -20,10 +24,15 @@ inline bool takes_part_in_cell_means(const Particles& P, std::size_t p, const st
   return P.mass[p] > limit[P.body[p]] * P.volume[p];
 }
 
-void reset_grid(Simulation& s);                 ///< zero mass, momentum and forces of every field
-void compute_shape_functions(Simulation& s);    ///< S_ip, G_ip at start-of-step positions; strip bins
-void map_particles_to_grid(Simulation& s);      ///< m_i, p_i
-void smooth_mean_stress(Simulation& s);         ///< cell-averaged mean stress for the internal force
+void reset_grid(Simulation& s);               ///< zero mass, momentum and forces of every field
+void compute_shape_functions(Simulation& s);  ///< S_ip, G_ip at start-of-step positions; strip bins
+void map_particles_to_grid(Simulation& s);    ///< m_i, p_i
+void smooth_mean_stress(Simulation& s);       ///< cell-averaged mean stress for the internal force
+/// The pieces of smooth_mean_stress: zero the cell sums; then, per strip, sum and
+/// divide the strip's own cells (no other strip touches them).
+void clear_cell_mean_stress(Simulation& s);
+void strip_cell_mean_stress(Simulation& s, int strip, std::span<const std::uint32_t> particles,
+                            const std::vector<double>& limit);
 void compute_internal_forces(Simulation& s);    ///< f_i^int incl. the hoop term
 void apply_gravity(Simulation& s);              ///< f_i^ext += m_i g
 void apply_surface_pressure(Simulation& s);     ///< nodal forces of pressures on r grid lines
