@@ -19,18 +19,22 @@ inline void for_support(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
   }
 }
 
+/// m_i += S_ip m_p and p_i += S_ip m_p v_p for one particle.
+template <int S>
+inline void add_mass_momentum(const Simulation& s, std::size_t p, NodalField& f) {
+  const Particles& P = s.particles;
+  const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
+  for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
+    f.mass[i] += N * m;
+    f.momentum_r[i] += N * pr;
+    f.momentum_z[i] += N * pz;
+  });
+}
+
 template <int S>
 void scatter_mass_momentum(Simulation& s) {
   const Particles& P = s.particles;
-  s.bins.scatter([&](std::size_t p) {
-    NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-    const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
-    for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
-      f.mass[i] += N * m;
-      f.momentum_r[i] += N * pr;
-      f.momentum_z[i] += N * pz;
-    });
-  });
+  s.bins.scatter([&](std::size_t p) { add_mass_momentum<S>(s, p, s.grid.fields[s.bodies[P.body[p]].field]); });
 }
 
 /// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle (σ_p with
@@ -79,12 +83,7 @@ void scatter_mass_momentum_forces(Simulation& s) {
     if (smoothed) strip_cell_mean_stress(s, strip, particles, limit);
     for (const std::uint32_t p : particles) {
       NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-      const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
-      for_support<S>(s.grid, s.weights[p], [&](std::size_t i, double N, double, double) {
-        f.mass[i] += N * m;
-        f.momentum_r[i] += N * pr;
-        f.momentum_z[i] += N * pz;
-      });
+      add_mass_momentum<S>(s, p, f);
       add_internal_force<S>(s, p, f, smoothed, limit);
     }
   });
