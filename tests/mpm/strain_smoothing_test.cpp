@@ -15,7 +15,7 @@ using namespace ffp::mpm;
 
 namespace {
 
-/// A 0.1 m elastic block on the axis, 4 × 4 cells of 3 × 3 particles, full smoothing.
+/// A 0.1 m elastic block on the axis, 5 × 5 cells of 3 × 3 particles, full smoothing.
 Simulation smoothed_block() {
   ModelDescription m;
   m.r_nodes_m = testing::nodes(0.0, 0.1, 5);
@@ -29,7 +29,7 @@ Simulation smoothed_block() {
 }
 
 /// σ:ε with Voigt's tensor shear (ε_rz stored, counted twice).
-double contract(const Voigt& sigma, const Voigt& epsilon) {
+double work_density(const Voigt& sigma, const Voigt& epsilon) {
   return sigma[0] * epsilon[0] + sigma[1] * epsilon[1] + sigma[2] * epsilon[2] + 2.0 * sigma[3] * epsilon[3];
 }
 
@@ -56,7 +56,7 @@ TEST_CASE("full strain smoothing: every particle of a cell gets the cell's volum
     weighted.try_emplace(s.cell[p], Voigt::Zero()).first->second += s.particles.volume[p] * s.strain_increment[p];
     volume[s.cell[p]] += s.particles.volume[p];
   }
-  REQUIRE(volume.size() == 16);
+  REQUIRE(volume.size() == 25);
   smooth_strain_increment(s);
   for (std::size_t p = 0; p < n; ++p) {
     const Voigt mean = weighted.at(s.cell[p]) / volume.at(s.cell[p]);
@@ -98,7 +98,7 @@ TEST_CASE("full strain smoothing: the internal force is the transpose of the smo
   smooth_strain_increment(s);
   double strain_work = 0.0, scale = 0.0;
   for (std::size_t p = 0; p < n; ++p) {
-    strain_work += volume[p] * contract(s.particles.stress[p], s.strain_increment[p]);
+    strain_work += volume[p] * work_density(s.particles.stress[p], s.strain_increment[p]);
     scale += volume[p] * s.particles.stress[p].norm() * s.strain_increment[p].norm();
   }
   INFO("internal work " << internal_work << ", strain work " << strain_work);
