@@ -59,7 +59,8 @@ void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses)
   Particles& P = s.particles;
   const std::size_t first = b.begin, last = b.end, count = last - first;
   const double dt = s.dt_s, floor = s.mass_floor_kg;
-  const bool smoothed = s.settings.strain_smoothing;
+  // The subcycled body smooths the volumetric part under either smoothing mode (its own B-bar).
+  const bool smoothed = s.settings.strain_smoothing != StrainSmoothing::off;
 
   // The body's nodes and cells of this step, in the order its particles reach them.
   for (std::size_t k : nodes_) node_slot_[k] = -1;

@@ -7,7 +7,8 @@ StageList build_stages(const Simulation& s) {
   list.append({"reset_grid", reset_grid});
   list.append({"compute_shape_functions", compute_shape_functions});
   list.append({"map_particles_to_grid", map_particles_to_grid});
-  if (s.settings.strain_smoothing) list.append({"smooth_mean_stress", smooth_mean_stress});
+  const StrainSmoothing smoothing = s.settings.strain_smoothing;
+  if (smoothing != StrainSmoothing::off) list.append({"smooth_mean_stress", smooth_mean_stress});
   list.append({"compute_internal_forces", compute_internal_forces});
   if (s.gravity_m_s2) list.append({"apply_gravity", apply_gravity});
   if (!s.pressures.empty()) list.append({"apply_surface_pressure", apply_surface_pressure});
@@ -25,7 +26,8 @@ StageList build_stages(const Simulation& s) {
     list.append({"compute_strain_increments",
                  [](Simulation& sim) { compute_strain_increments(sim, StrainVelocity::updated_grid); }});
   }
-  if (s.settings.strain_smoothing) list.append({"smooth_volumetric_strain", smooth_volumetric_strain});
+  if (smoothing == StrainSmoothing::volumetric) list.append({"smooth_volumetric_strain", smooth_volumetric_strain});
+  if (smoothing == StrainSmoothing::full) list.append({"smooth_strain_increment", smooth_strain_increment});
   list.append({"update_stresses", update_stresses});
   list.append({s.settings.fixed_dt_s ? "check_time_step" : "update_time_step", update_time_step});
   return list;

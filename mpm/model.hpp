@@ -35,14 +35,26 @@ inline std::string to_string(Transfer t) {
   return std::string(std::ranges::find(kTransferNames, t, &TransferName::first)->second);
 }
 
+/// Which part of the strain increment is averaged over each cell (and, as its
+/// transpose in the internal force, which part of the stress): stage_stress.cpp.
+enum class StrainSmoothing {
+  off,         ///< each particle its own strain increment and stress
+  volumetric,  ///< B-bar: the cell-mean volumetric part (anti-locking)
+  full,        ///< the whole cell-mean tensor: one strain per cell, as one-point (mixed) integration
+};
+using StrainSmoothingName = std::pair<StrainSmoothing, std::string_view>;
+/// The scene's names of StrainSmoothing, in the order messages list them.
+inline constexpr auto kStrainSmoothingNames = std::to_array<StrainSmoothingName>(
+    {{StrainSmoothing::off, "off"}, {StrainSmoothing::volumetric, "volumetric"}, {StrainSmoothing::full, "full"}});
+
 struct SolverSettings {
   ShapeFunction shape_function = ShapeFunction::gimp;
   Transfer transfer = Transfer::musl;
   double flip_fraction = 0.99;       ///< α in v_p ← α·FLIP + (1 − α)·PIC
   double courant = 0.5;              ///< Δt = C·h_min/(c_p + |v|_max)
   std::optional<double> fixed_dt_s;  ///< when set, Δt is fixed (checked against the CFL limit every step)
-  bool strain_smoothing = true;      ///< cell-averaged volumetric strain increment (anti-locking)
-  double local_damping = 0.0;        ///< Cundall's local damping coefficient (0: no damping stage)
+  StrainSmoothing strain_smoothing = StrainSmoothing::volumetric;
+  double local_damping = 0.0;  ///< Cundall's local damping coefficient (0: no damping stage)
 };
 
 /// Particles fill the grid cells inside the region (a particle belongs to the

@@ -88,6 +88,7 @@ class Simulation {
   std::vector<double> spin_dt;     ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
   /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.
   std::vector<double> cell_volume, cell_volumetric_strain, cell_mean_stress;
+  std::vector<Voigt> cell_strain_increment, cell_stress;  ///< strain_smoothing full: whole cell-mean tensors
 };
 
 /// The CFL limit Δt_crit = h_min / (c_p + |v|_max): c_p = √(M/ρ) of each group at

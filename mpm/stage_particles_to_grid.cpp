@@ -40,17 +40,21 @@ void scatter_mass_momentum(Simulation& s) {
 /// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle (σ_p with
 /// its cell's mean stress under strain smoothing).
 template <int S>
-inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, bool smoothed,
+inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, StrainSmoothing smoothing,
                                const std::vector<double>& limit) {
   const Particles& P = s.particles;
   const ShapeWeights& w = s.weights[p];
   Voigt sig = P.stress[p];
-  if (smoothed &&
-      takes_part_in_cell_means(P, p, limit)) {  // B-bar: the cell's mean stress stands in for the particle's
-    const double shift = s.cell_mean_stress[s.cell[p] * s.bodies.size() + P.body[p]] - trace(sig) / 3.0;
-    sig[0] += shift;
-    sig[1] += shift;
-    sig[2] += shift;
+  if (smoothing != StrainSmoothing::off && takes_part_in_cell_means(P, p, limit)) {
+    const std::size_t k = s.cell[p] * s.bodies.size() + P.body[p];
+    if (smoothing == StrainSmoothing::full) {
+      sig = s.cell_stress[k];  // the cell's whole mean stress (the transpose of Δε_p ← Δε̄_c)
+    } else {                   // B-bar: the cell's mean stress stands in for the particle's
+      const double shift = s.cell_mean_stress[k] - trace(sig) / 3.0;
+      sig[0] += shift;
+      sig[1] += shift;
+      sig[2] += shift;
+    }
   }
   const double V = P.volume[p], hoop = sig[2] * w.inverse_r;
   for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {
@@ -61,10 +65,11 @@ inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, bool
 
 template <int S>
 void scatter_internal_forces(Simulation& s) {
-  const bool smoothed = s.settings.strain_smoothing;
+  const StrainSmoothing smoothing = s.settings.strain_smoothing;
+  const bool smoothed = smoothing != StrainSmoothing::off;
   const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
   s.bins.scatter([&](std::size_t p) {
-    add_internal_force<S>(s, p, s.grid.fields[s.bodies[s.particles.body[p]].field], smoothed, limit);
+    add_internal_force<S>(s, p, s.grid.fields[s.bodies[s.particles.body[p]].field], smoothing, limit);
   });
 }
 
@@ -76,7 +81,8 @@ void scatter_internal_forces(Simulation& s) {
 template <int S>
 void scatter_mass_momentum_forces(Simulation& s) {
   const Particles& P = s.particles;
-  const bool smoothed = s.settings.strain_smoothing;
+  const StrainSmoothing smoothing = s.settings.strain_smoothing;
+  const bool smoothed = smoothing != StrainSmoothing::off;
   const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
   if (smoothed) clear_cell_mean_stress(s);
   s.bins.scatter_strips([&](int strip, std::span<const std::uint32_t> particles) {
@@ -84,7 +90,7 @@ void scatter_mass_momentum_forces(Simulation& s) {
     for (const std::uint32_t p : particles) {
       NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
       add_mass_momentum<S>(s, p, f);
-      add_internal_force<S>(s, p, f, smoothed, limit);
+      add_internal_force<S>(s, p, f, smoothing, limit);
     }
   });
 }
@@ -96,7 +102,7 @@ bool forces_fuse_with_mapping(const Simulation& s) {
   const auto last = std::ranges::find(stages, "compute_internal_forces", &Stage::name);
   if (first == stages.end() || last == stages.end() || last < first) return false;
   return std::all_of(first + 1, last, [&](const Stage& stage) {
-    return stage.name == "smooth_mean_stress" && s.settings.strain_smoothing;
+    return stage.name == "smooth_mean_stress" && s.settings.strain_smoothing != StrainSmoothing::off;
   });
 }
 

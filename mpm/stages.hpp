@@ -46,7 +46,8 @@ void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1
 enum class StrainVelocity : std::uint8_t { updated_grid, remapped };
 void compute_strain_increments(Simulation& s, StrainVelocity source);  ///< Δε, spin, volume
 void smooth_volumetric_strain(Simulation& s);                          ///< cell-averaged Δε_vol
-void update_stresses(Simulation& s);                                   ///< Jaumann rotation, then the law
-void update_time_step(Simulation& s);  ///< CFL Δt for the next step (or check a fixed Δt)
+void smooth_strain_increment(Simulation& s);  ///< cell-averaged whole Δε (strain_smoothing full)
+void update_stresses(Simulation& s);          ///< Jaumann rotation, then the law
+void update_time_step(Simulation& s);         ///< CFL Δt for the next step (or check a fixed Δt)
 
 }  // namespace ffp::mpm

@@ -20,7 +20,7 @@
 ///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
 ///               pic_blend per_soil_step | per_step (the PIC share 1 − flip_fraction per soil CFL step
 ///               at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt: mpm/ffp_model.hpp),
-///               courant 0.5, strain_smoothing true, subcycle off | auto | on (a deformable FFP's own
+///               courant 0.5, strain_smoothing volumetric, subcycle off | auto | on (a deformable FFP's own
 ///               substeps inside the soil's step: mpm/body_subcycle.hpp)}
 ///   output     {history_interval_s 2e-4, field_times_s [0.04, 0.06, end], strain_colour_max 0.5}
 /// Writes history.csv (time_s, penetration_m (+ down), velocity_m_s (+ down), deceleration_g

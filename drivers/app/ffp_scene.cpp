@@ -4,6 +4,7 @@
 #include <cmath>
 #include <variant>
 
+#include "drivers/app/mpm_scene.hpp"
 #include "drivers/scene/material_scene.hpp"
 #include "models/math_constants.hpp"
 
@@ -176,7 +177,7 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
   s.transfer = solver.choice("transfer", mpm::kTransferNames, mpm::Transfer::usl);
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
-  s.strain_smoothing = solver.boolean("strain_smoothing", true);
+  s.strain_smoothing = read_strain_smoothing(solver);
   d.pic_blend = solver.choice("pic_blend", mpm::kPicBlendNames, mpm::PicBlend::per_soil_step);
   if (kind == PenetrometerKind::cpt) {
     // A quasi-static push may damp the waves that an undamped explicit model keeps forever.

@@ -52,8 +52,10 @@ MpmRunResult run_mpm(mpm::Simulation& s, const MpmOutputTimes& times, const MpmR
   ThreadGovernor threads;
   try {
     while (!reached(s.time_s, end)) {
-      if (s.time_s + s.dt_s > end) s.dt_s = end - s.time_s;  // land on end_time_s
+      // The smallest step the solver chose, before a landing step's cut: that cut is
+      // end_time_s's arithmetic (any length in (0, Δt]), not the model's stability.
       result.dt_min_s = std::min(result.dt_min_s, s.dt_s);
+      if (s.time_s + s.dt_s > end) s.dt_s = end - s.time_s;  // land on end_time_s
       s.advance();
       if (callbacks.after_step) callbacks.after_step();
       if (reached(s.time_s, next_history) || reached(s.time_s, end)) {

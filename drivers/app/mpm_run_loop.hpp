@@ -35,7 +35,7 @@ struct MpmRunCallbacks {
 
 struct MpmRunResult {
   long steps = 0;         ///< the simulation's step count at the end
-  double dt_min_s = 0.0;  ///< the smallest step taken (the one landing on end_time_s included)
+  double dt_min_s = 0.0;  ///< the smallest step the solver chose (a landing step's cut to end_time_s left out)
 };
 
 /// Runs `s` from its current time to `times.end_time_s`. `kind` names the run in

@@ -91,6 +91,15 @@ std::vector<std::string> mpm_history_quantities(const std::vector<std::string>& 
   return out;
 }
 
+/// solver.strain_smoothing: a mode name, or true/false as before the modes
+/// (true: volumetric, false: off).
+mpm::StrainSmoothing read_strain_smoothing(SceneReader& solver) {
+  const std::optional<json> value = solver.raw("strain_smoothing");
+  if (value && value->is_boolean())
+    return value->get<bool>() ? mpm::StrainSmoothing::volumetric : mpm::StrainSmoothing::off;
+  return solver.choice("strain_smoothing", mpm::kStrainSmoothingNames, mpm::StrainSmoothing::volumetric);
+}
+
 MpmScene read_mpm_scene(SceneReader& scene) {
   MpmScene out;
   mpm::ModelDescription& model = out.model;
@@ -183,7 +192,7 @@ MpmScene read_mpm_scene(SceneReader& scene) {
   s.flip_fraction = solver.number("flip_fraction", Range::closed(0.0, 1.0), 0.99);
   s.courant = solver.number("courant", Range::positive(1.0), 0.5);
   if (solver.has("dt_s")) s.fixed_dt_s = solver.number("dt_s", Range::positive(kMaxTime_s, "s"));
-  s.strain_smoothing = solver.boolean("strain_smoothing", true);
+  s.strain_smoothing = read_strain_smoothing(solver);
   s.local_damping = solver.number("local_damping", Range::half_open(0.0, 1.0), 0.0);
   solver.finish("solver");
 

@@ -31,6 +31,10 @@ struct MpmScene {
 /// Reads every key of the scene after kind/name and finish()es it. SceneError on bad input.
 MpmScene read_mpm_scene(SceneReader& scene);
 
+/// solver.strain_smoothing (mpm and ffp/cpt scenes): a mode name (off, volumetric, full),
+/// or true/false as before the modes (true: volumetric, false: off).
+mpm::StrainSmoothing read_strain_smoothing(SceneReader& solver);
+
 /// The history quantities a scene may ask for (body-wise ones are `<body>_<quantity>`).
 std::vector<std::string> mpm_history_quantities(const std::vector<std::string>& body_names);
 

@@ -1,6 +1,6 @@
 /// The steel penetrometer subcycled (mpm/body_subcycle.hpp): it takes its own
 /// CFL substeps inside the soil's step, exchanges contact once per soil step,
-/// and must follow the single-step run, conserve momentum to round-off and
+/// and must follow the single-step run, conserve momentum as it does and
 /// create no energy.
 #include <catch2/catch.hpp>
 
@@ -70,28 +70,50 @@ TEST_CASE("a subcycled steel FFP takes N = ceil(dt_soil/dt_steel) substeps and t
   CHECK(run.subcycle()->total_substeps() == n);
 }
 
-TEST_CASE("subcycled steel FFP: the soil loses exactly the reported impulse (weightless, 2 ms)",
+TEST_CASE("subcycled steel FFP: soil and body exchange the reported impulse, as single (weightless, 2 ms)",
           "[ffp][subcycle][momentum]") {
   // The soil's corrections are handed to the body as nodal impulses and act as
-  // constant forces over its substeps: momentum closes to round-off, like the
-  // single step's node-by-node exchange.
-  FfpDescription d = steel(Subcycle::on);
-  d.gravity_m_s2 = 0.0;
-  FfpRun run(d);
-  Simulation& s = run.simulation();
-  const double ffp0 = measure_body(s, 1).momentum_z_N_s;
-  while (s.time_s < 0.002) run.advance();
-  const double soil = measure_body(s, 0).momentum_z_N_s, ffp = measure_body(s, 1).momentum_z_N_s;
-  INFO("FFP momentum change " << ffp - ffp0 << " N s, soil momentum " << soil << " N s, ∫R dt "
-                              << run.state().impulse_N_s << " after " << s.step << " steps");
-  REQUIRE(ffp - ffp0 > 0.3);  // a real exchange
-  // The soil's side: it loses what the reported impulse says (1e-5 as the single step's
-  // test, before the disturbance reaches the fixed boundaries; by 4 ms it is 1.1e-4).
-  CHECK(soil == Approx(-run.state().impulse_N_s).epsilon(1e-5));
-  // The body's side is not yet: it gains 0.04–0.13 % more per step than the impulses it
-  // is handed (measured; the single step closes to 1e-10). An open defect of the
-  // substeps, bounded here so that it cannot grow unnoticed.
-  CHECK(std::abs(run.state().impulse_N_s - (ffp - ffp0)) < 2e-3 * (ffp - ffp0));
+  // constant forces over its substeps; internal forces sum to zero (partition of
+  // unity) and the FLIP/PIC update keeps Σ m_p v_p = Σ m_i v_i: momentum closes as
+  // in the single step's node-by-node exchange. The classic MUSL's second (remapped)
+  // contact must leave the subcycled body alone.
+  for (const auto& [mode, transfer] :
+       {std::pair{Subcycle::on, Transfer::musl}, std::pair{Subcycle::off, Transfer::musl},
+        std::pair{Subcycle::on, Transfer::usl}}) {
+    FfpDescription d = steel(mode);
+    d.gravity_m_s2 = 0.0;
+    d.solver.transfer = transfer;  // the coarse model's classic MUSL, and the scenes' USL
+    FfpRun run(d);
+    Simulation& s = run.simulation();
+    const Diagnostics body0 = measure_body(s, 1);
+    const double ffp0 = body0.momentum_z_N_s;
+    while (s.time_s < 0.002) run.advance();
+    const double soil = measure_body(s, 0).momentum_z_N_s, ffp = measure_body(s, 1).momentum_z_N_s;
+    const double exchanged = run.state().impulse_N_s;
+    INFO(to_string(mode) << (transfer == Transfer::usl ? " usl" : " musl") << ": FFP momentum change " << ffp - ffp0
+                         << " N s, soil momentum " << soil << " N s, ∫R dt " << exchanged << " N s after " << s.step
+                         << " steps; body's error " << (ffp - ffp0 - exchanged) / exchanged);
+    REQUIRE(ffp - ffp0 > 0.3);  // a real exchange
+    // The soil's side: 1e-5, before the disturbance reaches the fixed boundaries (by 4 ms it is 1.1e-4).
+    CHECK(soil == Approx(-exchanged).epsilon(1e-5));
+    // The body's side: measured 1.2e-8 of the exchange subcycled under MUSL (it was 0.04–0.13 %
+    // per step before the remapped contact left the body alone), 1.0e-8 under USL, and 1.2e-8
+    // single (2,098 steps). Not round-off in either: the internal forces summed over the filled
+    // nodes are not exactly 0 (measured: up to 3.5e-9 N s in a step), as a node below the mass
+    // floor takes a force that integrate_grid drops (GIMP at the support's edge: S_ip ~ ε²,
+    // G_ip ~ ε). The bound is 8× the largest.
+    CHECK(std::abs(ffp - ffp0 - exchanged) < 1e-7 * exchanged);
+    if (const BodySubcycle* sub = run.subcycle()) {
+      // And its energy changes by the work of the contact forces on its nodes, up to what
+      // FLIP/PIC and the central differences lose (measured: 7.1e-7 (MUSL) and 6.8e-7 (USL)
+      // of the impact energy); bound 1e-5.
+      const double change = measure_body(s, 1).total_energy_J() - body0.total_energy_J();
+      INFO("body energy change " << change << " J, contact work " << sub->contact_work_J() << " J, balance "
+                                 << (change - sub->contact_work_J()) / body0.kinetic_energy_J
+                                 << " of the impact energy");
+      CHECK(std::abs(change - sub->contact_work_J()) < 1e-5 * body0.kinetic_energy_J);
+    }
+  }
 }
 
 TEST_CASE("a subcycled steel FFP follows the single-step one and creates no energy (2 cm, 10 ms)",
@@ -122,10 +144,11 @@ TEST_CASE("a subcycled steel FFP follows the single-step one and creates no ener
   const double initial = measure(start.simulation()).total_energy_J();
   CHECK(measure(run.simulation()).total_energy_J() < initial);
   // The body's energy changes by the work of the contact forces on it, up to what its
-  // particle update (FLIP/PIC) loses: 1 % of the impact energy.
+  // particle update (FLIP/PIC, α = 0.99 per soil step) and its central differences lose:
+  // measured 9.4e-5 J of a 15 J exchange (7.8e-7 of the impact energy); bound 1e-4.
   const Diagnostics body0 = measure_body(start.simulation(), 1), body = measure_body(run.simulation(), 1);
   const double balance = body.total_energy_J() - body0.total_energy_J() - run.subcycle()->contact_work_J();
   INFO("body energy change " << body.total_energy_J() - body0.total_energy_J() << " J, contact work "
                              << run.subcycle()->contact_work_J() << " J");
-  CHECK(std::abs(balance) < 0.01 * body0.kinetic_energy_J);
+  CHECK(std::abs(balance) < 1e-4 * body0.kinetic_energy_J);
 }

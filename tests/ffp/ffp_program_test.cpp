@@ -202,3 +202,48 @@ TEST_CASE("reference FFP on 2 cm: the tip half a cell off a node row moves the f
   INFO("final penetration: " << on_row << " m on a row, " << off_row << " m half a cell off");
   CHECK(std::abs(off_row - on_row) <= 0.03 * on_row);
 }
+
+TEST_CASE("reference FFP on 2 cm: dt_min_s is the CFL rule's smallest step, not the cut landing on end_time_s",
+          "[ffp][program][time_step]") {
+  // 6.3 ms ends 4 % of a step after the 42nd step (measured: the landing step was
+  // 6.9e-6 s against a first step of 1.8e-4 s, which dt_min_s reported as a 26×
+  // "collapse"). The CFL step itself falls only by the disconnected particles'
+  // density floor (c_p ∝ 1/√ρ, ρ ≥ ρ0/2: a factor ≥ 1/√2 ≈ 0.71) and the slightly
+  // larger stresses and speeds near the cone: measured 0.63 of the first step over
+  // the whole 0.15 s run at 2 cm and at 1 cm. Half the first step is the bound.
+  ScratchDir scratch;
+  const auto out = scratch.path() / "run";
+  REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                       "mesh.min_cell_m=0.02", "--set", "end_time_s=0.0063", "--set", "output.field_times_s=[]"},
+                      scratch.path())
+              .exit_code == 0);
+  const nlohmann::json summary = read_json(out / "summary.json");
+  const double first = summary["dt_s"].get<double>(), smallest = summary["dt_min_s"].get<double>();
+  INFO("first step " << first << " s, dt_min_s " << smallest << " s");
+  CHECK(smallest <= first);
+  CHECK(smallest > 0.5 * first);
+}
+
+TEST_CASE("reference FFP on 2 cm with MUSL: Courant 0.5 and 0.05 agree within 1.5 % in penetration at 60 ms",
+          "[ffp][program][time_step]") {
+  // The time step's own error. MUSL (strains from the remapped particle velocities)
+  // converges smoothly: measured 0.1630 / 0.1638 / 0.1642 / 0.1643 m at Courant
+  // 0.5 / 0.1 / 0.05 / 0.02 (0.7 % from 0.5 to 0.05). USL (strains from the updated
+  // grid velocities) does not: 0.1556 / 0.1563 / 0.1606 / 0.1639 m, a 3.1 % step
+  // between 0.5 and 0.05 that an elastic sand does not show (both transfers converge
+  // there); the plastic return of USL's strain increments is the Courant-dependent
+  // part. 1.5 % is twice MUSL's measured difference and half USL's.
+  ScratchDir scratch;
+  auto penetration = [&](const std::string& courant) {
+    const auto out = scratch.path() / ("courant_" + courant);
+    REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
+                         "mesh.min_cell_m=0.02", "--set", "end_time_s=0.06", "--set", "solver.transfer=musl", "--set",
+                         "solver.courant=" + courant, "--set", "output.field_times_s=[]"},
+                        scratch.path())
+                .exit_code == 0);
+    return read_json(out / "summary.json")["final_penetration_m"].get<double>();
+  };
+  const double coarse = penetration("0.5"), fine = penetration("0.05");
+  INFO("penetration at 60 ms: " << coarse << " m at Courant 0.5, " << fine << " m at 0.05");
+  CHECK(std::abs(coarse - fine) <= 0.015 * fine);
+}

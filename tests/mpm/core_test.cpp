@@ -73,7 +73,7 @@ TEST_CASE("stage list: a model gets only the stages it needs and stages insert b
   m.z_nodes_m = testing::nodes(0.0, 0.1, 4);
   m.bodies.push_back(testing::elastic_body("b", 1e6, 0.3, 1000.0, BoxRegion{0, 0.05, 0, 0.05}));
   m.solver.transfer = Transfer::usl;
-  m.solver.strain_smoothing = false;
+  m.solver.strain_smoothing = StrainSmoothing::off;
   Simulation weightless(m);
   CHECK_FALSE(weightless.stages.contains("apply_gravity"));
   CHECK_FALSE(weightless.stages.contains("map_velocities_to_grid"));
@@ -81,7 +81,7 @@ TEST_CASE("stage list: a model gets only the stages it needs and stages insert b
   CHECK_FALSE(weightless.stages.contains("apply_local_damping"));
   m.gravity_m_s2 = 9.81;
   m.solver.transfer = Transfer::musl;
-  m.solver.strain_smoothing = true;
+  m.solver.strain_smoothing = StrainSmoothing::volumetric;
   Simulation heavy(m);
   CHECK(heavy.stages.contains("apply_gravity"));
   CHECK(heavy.stages.contains("map_velocities_to_grid"));
