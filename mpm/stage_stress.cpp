@@ -6,6 +6,18 @@
 
 namespace ffp::mpm {
 
+// f(p, slot) for each particle of a strip that takes part in the strain means, in
+// strip order (slot = cell·bodies + body); a subcycled body smooths its own.
+template <class F>
+void for_strain_mean_particles(const Simulation& s, std::span<const std::uint32_t> strip,
+                               const std::vector<double>& limit, F&& f) {
+  const std::size_t bodies = s.bodies.size();
+  for (const std::uint32_t p : strip) {
+    if (p >= s.main_step_end || !takes_part_in_cell_means(s.particles, p, limit)) continue;
+    f(p, s.cell[p] * bodies + s.particles.body[p]);
+  }
+}
+
 // Strain smoothing (Al-Kafaji 2013; Yerro 2015): per cell c and body,
 //   Δε̄_v,c = Σ_{p∈c} V_p Δε_v,p / Σ_{p∈c} V_p   (V_p = r_p A_p: axisymmetric volume weights)
 //   Δε_p ← Δε_p + (Δε̄_v,c − Δε_v,p)/3 · I
@@ -24,21 +36,17 @@ void smooth_volumetric_strain(Simulation& s) {
   // Per strip (whose cells no other strip touches): the cell sums, then the
   // shift of the same particles, in one pass over the strip's data.
   s.bins.for_each_strip([&](int, std::span<const std::uint32_t> strip) {
-    for (const std::uint32_t p : strip) {
-      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;  // a subcycled body smooths its own
-      const std::size_t k = s.cell[p] * bodies + P.body[p];
+    for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       s.cell_volume[k] += P.volume[p];
       s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
-    }
-    for (const std::uint32_t p : strip) {
-      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;
-      const std::size_t k = s.cell[p] * bodies + P.body[p];
+    });
+    for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       Voigt& de = s.strain_increment[p];
       const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
       de[0] += shift;
       de[1] += shift;
       de[2] += shift;
-    }
+    });
   });
 }
 
@@ -59,17 +67,13 @@ void smooth_strain_increment(Simulation& s) {
   s.cell_volume.assign(slots, 0.0);
   s.cell_strain_increment.assign(slots, Voigt::Zero());
   s.bins.for_each_strip([&](int, std::span<const std::uint32_t> strip) {
-    for (const std::uint32_t p : strip) {
-      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;  // a subcycled body smooths its own
-      const std::size_t k = s.cell[p] * bodies + P.body[p];
+    for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       s.cell_volume[k] += P.volume[p];
       s.cell_strain_increment[k] += P.volume[p] * s.strain_increment[p];
-    }
-    for (const std::uint32_t p : strip) {
-      if (p >= s.main_step_end || !takes_part_in_cell_means(P, p, limit)) continue;
-      const std::size_t k = s.cell[p] * bodies + P.body[p];
+    });
+    for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       s.strain_increment[p] = s.cell_strain_increment[k] / s.cell_volume[k];
-    }
+    });
   });
 }
 
