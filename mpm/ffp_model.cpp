@@ -201,7 +201,6 @@ FfpRun::FfpRun(const FfpDescription& d)
     settings.contact = d.contact;
     settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
     settings.project_particles = d.project_particles;
-    settings.rim_mass_share = d.rim_mass_share;
     rigid_ = std::make_unique<RigidPenetrometer>(settings);
     rigid_->attach(s);
     s.rigid_speed_m_s = std::abs(d.velocity_m_s);

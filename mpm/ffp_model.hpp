@@ -113,9 +113,6 @@ struct FfpDescription {
   /// Rigid only: soil particles inside the outline after a step are put back onto it
   /// (RigidPenetrometerSettings::project_particles).
   bool project_particles = false;
-  /// Rigid flat tip only: the base's nodes move only their soil mass from under the base
-  /// (RigidPenetrometerSettings::rim_mass_share).
-  bool rim_mass_share = false;
   FfpMesh mesh;
   SolverSettings solver;
   /// The PIC blend is a numerical viscosity of about (1 − α)·h²/Δt: applied per

@@ -25,8 +25,6 @@ struct PenetrometerState {
 struct ContactNode {
   std::size_t node = 0;
   Vector2 normal;
-  /// Share of the node's soil mass that the contact moves (contact.rim_mass_share; 1 otherwise).
-  double share = 1.0;
 };
 
 /// The outline's unit outward normal at the point closest to node (r, z). On

@@ -55,42 +55,6 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
       soil_star_.push_back({f.velocity_new_r[k], f.velocity_new_z[k]});
     }
   }
-  if (settings_.rim_mass_share) rim_mass_shares(s);
-}
-
-// contact.rim_mass_share (flat tip). A node of the base's edge column r_i = R carries soil
-// from both sides of the edge: its mass m_i = Σ_p S_ip m_p sums particles under the base
-// (r_p < R) and beyond it. The punch moves only the first: of the node's momentum m_i v*_i the
-// part m_in = m_i − m_out, m_out = Σ_{p: r_p ≥ R} S_ip m_p, takes the body's velocity and the
-// rest keeps its own, so
-//   m_i v'_i = m_in v_c + m_out v*_i,  i.e.  v'_i = v*_i + w_i (v_c − v*_i),  w_i = m_in / m_i,
-// with v_c the contact law's velocity. The soil's impulse (the reaction) is m_in (v_c − v*)_z:
-// exactly what the covered mass received. Nodes whose support lies wholly under the base have
-// m_out = 0 and w = 1 exactly (the full correction). Only nodes facing the base (n_z < 0) are
-// weighted: the shaft's nodes push soil that lies beside it, all of it beyond R.
-void RigidPenetrometer::rim_mass_shares(const Simulation& s) {
-  const Particles& P = s.particles;
-  const NodalField& f = s.grid.fields[settings_.soil_field];
-  const double R = settings_.shape.base_radius_m, reach = 2.0 * s.grid.min_spacing();
-  const double top = tip_z_ + settings_.shape.total_length_m() + reach;
-  const int S = s.settings.shape_function == ShapeFunction::linear ? 2 : 3;
-  outside_mass_.assign(s.grid.nodes(), 0.0);
-  for (const Body& body : s.bodies) {
-    if (body.field != settings_.soil_field) continue;
-    for (std::size_t p = body.begin; p < body.end; ++p) {
-      // Particles further out than R + 2h_min, or above the body, reach no node of the base.
-      if (P.r[p] < R || P.r[p] > R + reach || P.z[p] < tip_z_ - reach || P.z[p] > top) continue;
-      const ShapeWeights& w = s.weights[p];
-      for (int b = 0; b < S; ++b) {
-        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-        for (int a = 0; a < S; ++a) outside_mass_[row + static_cast<std::size_t>(a)] += w.wr[a] * w.wz[b] * P.mass[p];
-      }
-    }
-  }
-  for (ContactNode& c : nodes_) {
-    const double outside = outside_mass_[c.node];
-    c.share = c.normal.z < 0.0 && outside > 0.0 ? std::clamp(1.0 - outside / f.mass[c.node], 0.0, 1.0) : 1.0;
-  }
 }
 
 double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) const {
@@ -101,9 +65,7 @@ double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std:
   for (std::size_t c = 0; c < nodes_.size(); ++c) {
     const std::size_t k = nodes_[c].node;
     const Vector2 before = soil_star_[c];
-    Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact, dt_over_h);
-    const double w = nodes_[c].share;
-    if (w < 1.0) after = {before.r + w * (after.r - before.r), before.z + w * (after.z - before.z)};
+    const Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact, dt_over_h);
     sum += f.mass[k] * (after.z - before.z);
     if (after.r != before.r || after.z != before.z) ++count;
     if (write) {
@@ -183,11 +145,10 @@ void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
   const Vector2 body{0.0, state_.velocity_m_s};
   const double dt_over_h = s.dt_s / s.grid.min_spacing();
   for (const ContactNode& c : nodes_) {
-    const Vector2 before{f.velocity_r[c.node], f.velocity_z[c.node]};
-    const Vector2 after = contact_velocity(before, body, c.normal, settings_.contact, dt_over_h);
-    const double w = c.share;
-    f.velocity_r[c.node] = w < 1.0 ? before.r + w * (after.r - before.r) : after.r;
-    f.velocity_z[c.node] = w < 1.0 ? before.z + w * (after.z - before.z) : after.z;
+    const Vector2 after =
+        contact_velocity({f.velocity_r[c.node], f.velocity_z[c.node]}, body, c.normal, settings_.contact, dt_over_h);
+    f.velocity_r[c.node] = after.r;
+    f.velocity_z[c.node] = after.z;
   }
 }
 

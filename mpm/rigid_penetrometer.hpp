@@ -78,9 +78,6 @@ struct RigidPenetrometerSettings {
   std::uint8_t soil_field = 0;
   /// Put soil particles found inside the outline after a step back onto it (see above).
   bool project_particles = false;
-  /// Flat tip only: a base node's correction acts on the share of its soil mass whose
-  /// particles lie under the base (r_p < R) (see rim_mass_shares).
-  bool rim_mass_share = false;
 };
 
 class RigidPenetrometer {
@@ -118,8 +115,6 @@ class RigidPenetrometer {
 
  private:
   void find_nodes(const Simulation& simulation);
-  /// contact.rim_mass_share: each base node's share of soil mass from particles under the base.
-  void rim_mass_shares(const Simulation& simulation);
   /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v).
   double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected) const;
   double solve_free_velocity(Simulation& simulation, double v_free) const;
@@ -129,8 +124,7 @@ class RigidPenetrometer {
   double tip_z0_, tip_z_;
   PenetrometerState state_;
   std::vector<ContactNode> nodes_;
-  std::vector<Vector2> soil_star_;    ///< v*_s at the nodes, before contact
-  std::vector<double> outside_mass_;  ///< rim_mass_share: per grid node, Σ S_ip m_p over particles beyond R
+  std::vector<Vector2> soil_star_;  ///< v*_s at the nodes, before contact
 };
 
 }  // namespace ffp::mpm

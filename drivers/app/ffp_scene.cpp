@@ -137,12 +137,7 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   d.project_particles = c.boolean("project_particles", !d.deformable);
   if (d.project_particles && d.deformable)
     c.fail("project_particles", "applies to a rigid penetrometer only (this one is deformable)");
-  // A flat punch's edge node column carries soil from both sides of the edge: with this, the
-  // contact moves only the share of a base node's mass whose particles lie under the base.
-  d.rim_mass_share = c.boolean("rim_mass_share", false);
-  if (d.rim_mass_share && (d.deformable || !d.shape.flat_tip()))
-    c.fail("rim_mass_share", "applies to a rigid penetrometer with ffp.tip flat only (a punch)");
-  c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells, project_particles, rim_mass_share)");
+  c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells, project_particles)");
 }
 
 void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
