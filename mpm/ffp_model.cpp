@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -72,18 +71,12 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   FfpGridLayout g;
   // Radial: uniform cells no smaller than h on [0, R] and [R, fine], a node exactly at R.
   g.r_nodes_m = {0.0};
-  if (std::getenv("FFP_EDGE_MID") != nullptr) {  // EXPERIMENT: the edge midway between two node columns
-    const int n = cells_in(R, h);
-    append_uniform(g.r_nodes_m, R + 0.5 * R / (n + 0.5), n + 1);
-  } else {
-    append_uniform(g.r_nodes_m, R, cells_in(R, h));
-  }
+  append_uniform(g.r_nodes_m, R, cells_in(R, h));
   double fine = std::min(m.fine_radius_m, d.soil.radius_m);
   if (d.soil.radius_m - fine < 2.0 * h) fine = d.soil.radius_m;  // no sliver of graded cells
-  const double inner = g.r_nodes_m.back();
-  const int n_fine = cells_in(fine - inner, h);
+  const int n_fine = cells_in(fine - R, h);
   append_uniform(g.r_nodes_m, fine, n_fine);
-  const double fine_cell = (fine - inner) / n_fine;
+  const double fine_cell = (fine - R) / n_fine;
   append_graded(g.r_nodes_m, d.soil.radius_m, fine_cell * m.growth, std::max(m.max_cell_m, fine_cell), m.growth,
                 fine_cell);
 
