@@ -10,10 +10,16 @@ namespace ffp::mpm {
 
 /// Full body (not per radian), SI, z up.
 struct PenetrometerState {
-  double displacement_m = 0.0;    ///< of the tip (rigid) or of the centre of mass (deformable) since t = 0
-  double velocity_m_s = 0.0;      ///< vertical velocity at the end of the last step
-  double reaction_N = 0.0;        ///< vertical force of the soil on the penetrometer over the last step
-  double impulse_N_s = 0.0;       ///< Σ reaction·Δt over all steps (exact, not sampled)
+  double displacement_m = 0.0;  ///< of the tip (rigid) or of the centre of mass (deformable) since t = 0
+  double velocity_m_s = 0.0;    ///< vertical velocity at the end of the last step
+  double reaction_N = 0.0;      ///< vertical force of the soil on the penetrometer over the last step
+  double impulse_N_s = 0.0;     ///< Σ reaction·Δt over all steps (exact, not sampled)
+  /// Rigid body only: the parts of impulse_N_s taken at the cone's nodes (outward normal pointing
+  /// down: cone, apex and fillet), of which along the normal (bearing: Σ (Δp·n) n_z), and at
+  /// the shaft's (horizontal normal: friction only). impulse − cone − shaft is the top's.
+  double cone_impulse_N_s = 0.0;
+  double cone_normal_impulse_N_s = 0.0;
+  double shaft_impulse_N_s = 0.0;
   std::size_t contact_nodes = 0;  ///< nodes where the soil's velocity was corrected in the last step
   /// Particle projection (rigid, contact.project_particles): soil particles put back onto the
   /// outline in the last step, and how deep the deepest of them was before that.

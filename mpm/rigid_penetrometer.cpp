@@ -57,27 +57,42 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
   }
 }
 
-double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) const {
+double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) {
   NodalField& f = s.grid.fields[settings_.soil_field];
   const double dt_over_h = s.dt_s / s.grid.min_spacing();
-  double sum = 0.0;
+  double sum = 0.0, cone = 0.0, cone_normal = 0.0, shaft = 0.0;
   std::size_t count = 0;
   for (std::size_t c = 0; c < nodes_.size(); ++c) {
     const std::size_t k = nodes_[c].node;
+    const Vector2 n = nodes_[c].normal;
     const Vector2 before = soil_star_[c];
-    const Vector2 after = contact_velocity(before, {0.0, v}, nodes_[c].normal, settings_.contact, dt_over_h);
-    sum += f.mass[k] * (after.z - before.z);
+    const Vector2 after = contact_velocity(before, {0.0, v}, n, settings_.contact, dt_over_h);
+    const double dp_z = f.mass[k] * (after.z - before.z);
+    sum += dp_z;
     if (after.r != before.r || after.z != before.z) ++count;
     if (write) {
       f.velocity_new_r[k] = after.r;
       f.velocity_new_z[k] = after.z;
+      // The split of the same impulse: cone (n_z < 0) or shaft (n_z = 0), and the
+      // cone's normal part (Δp·n) n_z, the rest of its z impulse being friction.
+      if (n.z < 0.0) {
+        cone += dp_z;
+        cone_normal += f.mass[k] * ((after.r - before.r) * n.r + (after.z - before.z) * n.z) * n.z;
+      } else if (n.z == 0.0) {
+        shaft += dp_z;
+      }
     }
+  }
+  if (write) {
+    state_.cone_impulse_N_s -= kTwoPi * cone;
+    state_.cone_normal_impulse_N_s -= kTwoPi * cone_normal;
+    state_.shaft_impulse_N_s -= kTwoPi * shaft;
   }
   if (corrected != nullptr) *corrected = count;
   return sum;
 }
 
-double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) const {
+double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) {
   const double M = settings_.mass_kg / kTwoPi;  // per radian, as the nodal masses
   auto residual = [&](double v) { return M * (v - v_free) + soil_impulse(s, v, false, nullptr); };
   double f_free = residual(v_free);

@@ -115,9 +115,10 @@ class RigidPenetrometer {
 
  private:
   void find_nodes(const Simulation& simulation);
-  /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v).
-  double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected) const;
-  double solve_free_velocity(Simulation& simulation, double v_free) const;
+  /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v)
+  /// and adding the body's share of it (−2π × the soil's) to the state's cone/shaft impulses.
+  double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected);
+  double solve_free_velocity(Simulation& simulation, double v_free);
 
   RigidPenetrometerSettings settings_;
   PenetrometerGeometry geometry_;

@@ -146,6 +146,8 @@ CsvTable PenetrometerJob::history_table() const {
        {"reaction_N", "contact_nodes", "soil_kinetic_energy_J", "dt_s", "impulse_N_s", "soil_intrusion_m"})
     columns.emplace_back(c);
   if (cpt()) columns.emplace_back("mean_pressure_kPa");
+  if (!run_->deformable())  // the rigid body's impulse split by where it is taken (PenetrometerState)
+    for (const char* c : {"cone_impulse_N_s", "cone_normal_impulse_N_s", "shaft_impulse_N_s"}) columns.emplace_back(c);
   return CsvTable(columns);
 }
 
@@ -161,6 +163,7 @@ void PenetrometerJob::record_row(CsvTable& history) {
              {sample.reaction_N, static_cast<double>(st.contact_nodes),
               mpm::measure_body(s, ffp.soil_body()).kinetic_energy_J, s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
   if (cpt()) row.push_back(1e-3 * sample.reaction_N / base_area_m2());
+  if (!ffp.deformable()) row.insert(row.end(), {st.cone_impulse_N_s, st.cone_normal_impulse_N_s, st.shaft_impulse_N_s});
   history.add_row(row);
   samples_.push_back(sample);
 }

@@ -50,6 +50,16 @@ TEST_CASE("reference FFP on 2 cm: M (v0 - v(t)) equals the integral of (R - M g)
   CHECK(worst_exact < 0.01);
   CHECK(worst_trapezoid < 0.01);
   CHECK(summary["momentum_balance_error"].get<double>() < 1e-9);  // the exact impulse: round-off only
+  // The split of the same impulse by where it is taken: the top (0.58 m above the tip)
+  // never meets the sand, so cone + shaft is all of it (to the CSV's 10 digits); the
+  // cone's normal part is the bearing, the rest of it the flank's friction (δ = 20°
+  // against the sand sliding up: both parts push the body up).
+  const double total = h.column("impulse_N_s").back(), cone = h.column("cone_impulse_N_s").back();
+  const double cone_normal = h.column("cone_normal_impulse_N_s").back(), shaft = h.column("shaft_impulse_N_s").back();
+  INFO("impulse " << total << " N s: cone " << cone << " (normal " << cone_normal << "), shaft " << shaft);
+  CHECK(std::abs(total - cone - shaft) < 1e-6 * total);
+  CHECK(cone_normal > 0.0);
+  CHECK(cone_normal < cone);
   // It did stop: the FFP lost all of its momentum within the 0.15 s.
   CHECK(summary["max_penetration_m"].get<double>() > 0.1);
   CHECK(std::abs(v.back()) < 0.05 * v0);
