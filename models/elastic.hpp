@@ -36,6 +36,27 @@ struct ElasticConstants {
   }
 };
 
+/// λ and 2G of a set of ElasticConstants, computed once: the elastic trial of a
+/// law's update without the divisions of lame_lambda() and shear_modulus() per
+/// point. Same operations on the same values, so the same bits as
+/// ElasticConstants::stress_increment.
+struct ElasticStiffness {
+  double lambda = 0.0;     ///< λ = Eν/((1 + ν)(1 − 2ν))
+  double two_shear = 0.0;  ///< 2G = 2·E/(2(1 + ν))
+
+  static ElasticStiffness of(const ElasticConstants& e) { return {e.lame_lambda(), 2.0 * e.shear_modulus()}; }
+
+  /// Δσ = λ tr(Δε) I + 2G Δε.
+  Voigt stress_increment(const Voigt& strain_increment) const {
+    const double lambda_tr = lambda * trace(strain_increment);
+    Voigt ds = two_shear * strain_increment;
+    ds[0] += lambda_tr;
+    ds[1] += lambda_tr;
+    ds[2] += lambda_tr;
+    return ds;
+  }
+};
+
 /// Linear elastic law (also the FFP body in the deformable comparison runs).
 class LinearElastic {
  public:

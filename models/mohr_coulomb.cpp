@@ -10,14 +10,15 @@ MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters)
     : parameters_(parameters),
       strength_(MohrCoulombStrength::of(parameters.friction_angle_rad, parameters.dilatancy_angle_rad,
                                         parameters.cohesion_Pa)),
-      stiffness_(PrincipalStiffness::of(parameters.elastic)) {}
+      stiffness_(PrincipalStiffness::of(parameters.elastic)),
+      elastic_stiffness_(ElasticStiffness::of(parameters.elastic)) {}
 
 double MohrCoulomb::yield_function(const Voigt& stress) const {
   return strength_.yield(PrincipalStresses(stress).values());
 }
 
 ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) const {
-  const Voigt trial = stress + parameters_.elastic.stress_increment(strain_increment);
+  const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
   Eigen::Vector3d returned = principal.values();
   const ReturnRegion region = return_to_mohr_coulomb(returned, strength_, stiffness_);

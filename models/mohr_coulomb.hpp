@@ -57,6 +57,7 @@ class MohrCoulomb {
   MohrCoulombParameters parameters_;
   MohrCoulombStrength strength_;
   PrincipalStiffness stiffness_;
+  ElasticStiffness elastic_stiffness_;  ///< λ, 2G for the trial stress
 };
 
 }  // namespace ffp

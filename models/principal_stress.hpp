@@ -34,9 +34,15 @@ class PrincipalStresses {
     Voigt out;
     if (planar_) {
       // Mohr's circle backwards: centre m, radius r, the same 2θ.
+      // cos 2θ, sin 2θ of the trial, formed only here: an elastic point never needs them.
+      double cos_2theta = 1.0, sin_2theta = 0.0;
+      if (radius_ > 0.0) {
+        cos_2theta = half_difference_ / radius_;
+        sin_2theta = shear_ / radius_;
+      }
       const double centre = 0.5 * (v[slot_major_in_plane_] + v[slot_minor_in_plane_]);
       const double radius = 0.5 * (v[slot_major_in_plane_] - v[slot_minor_in_plane_]);
-      out << centre + radius * cos_2theta_, centre - radius * cos_2theta_, v[slot_33_], radius * sin_2theta_, 0.0, 0.0;
+      out << centre + radius * cos_2theta, centre - radius * cos_2theta, v[slot_33_], radius * sin_2theta, 0.0, 0.0;
       return out;
     }
     // σ_ij = Σ_k σ_k n_ik n_jk
@@ -54,13 +60,9 @@ class PrincipalStresses {
     const double centre = 0.5 * (s[0] + s[1]);
     const double half_difference = 0.5 * (s[0] - s[1]);
     const double radius = std::sqrt(half_difference * half_difference + s[3] * s[3]);
-    if (radius > 0.0) {
-      cos_2theta_ = half_difference / radius;
-      sin_2theta_ = s[3] / radius;
-    } else {
-      cos_2theta_ = 1.0;
-      sin_2theta_ = 0.0;
-    }
+    half_difference_ = half_difference;
+    shear_ = s[3];
+    radius_ = radius;
     const double major = centre + radius;
     const double minor = centre - radius;
     const double out_of_plane = s[2];
@@ -126,8 +128,10 @@ class PrincipalStresses {
 
   Eigen::Vector3d values_;
   bool planar_ = true;
-  double cos_2theta_ = 1.0;
-  double sin_2theta_ = 0.0;
+  // The in-plane Mohr circle of the trial: 2θ from (σ_rr − σ_zz)/2 and σ_rz over its radius.
+  double half_difference_ = 0.0;
+  double shear_ = 0.0;
+  double radius_ = 0.0;
   int slot_33_ = 2;
   int slot_major_in_plane_ = 0;
   int slot_minor_in_plane_ = 1;

@@ -11,7 +11,9 @@
 namespace ffp {
 
 StrainSofteningMohrCoulomb::StrainSofteningMohrCoulomb(const StrainSofteningParameters& parameters)
-    : parameters_(parameters), stiffness_(PrincipalStiffness::of(parameters.elastic)) {}
+    : parameters_(parameters),
+      stiffness_(PrincipalStiffness::of(parameters.elastic)),
+      elastic_stiffness_(ElasticStiffness::of(parameters.elastic)) {}
 
 StrainSofteningMohrCoulomb::Peaks StrainSofteningMohrCoulomb::peaks(const State& state, double mean_pressure_Pa) const {
   const StrainSofteningParameters& p = parameters_;
@@ -69,7 +71,7 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
   const double eta = parameters_.softening_factor;
   const double decay_start = std::exp(-eta * state.plastic_deviatoric_strain);
 
-  const Voigt trial = stress + parameters_.elastic.stress_increment(strain_increment);
+  const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
   const Eigen::Vector3d& trial_values = principal.values();
   if (!(strength(pk, decay_start).yield(trial_values) > 0.0)) {

@@ -79,6 +79,7 @@ class StrainSofteningMohrCoulomb {
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;
+  ElasticStiffness elastic_stiffness_;  ///< λ, 2G for the trial stress
 };
 
 }  // namespace ffp

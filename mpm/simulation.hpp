@@ -27,6 +27,10 @@ class StepFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The nodal velocities compute_strain_increments reads: v^{n+1} of the grid update, or
+/// the MUSL-remapped ones.
+enum class StrainVelocity : std::uint8_t { updated_grid, remapped };
+
 /// Where particles are kept by constrained grid sides (±∞ on free sides).
 struct Walls {
   double r_min, r_max, z_min, z_max;
@@ -84,6 +88,11 @@ class Simulation {
       cell;  ///< each particle's grid cell (apart from its weights: the cell means read only this)
   std::vector<Voigt> strain_increment;  ///< Δε_p this step (Voigt)
   bool internal_forces_mapped = false;  ///< map_particles_to_grid made f_i^int (and the cell means) too
+  /// compute_strain_increments left Δε to smooth_volumetric_strain, right after it
+  /// (one pass over each strip: the increments, the cell sums, the shifts).
+  bool strain_deferred = false;
+  StrainVelocity strain_source = StrainVelocity::updated_grid;  ///< the nodal velocities of the deferred Δε
+  bool gravity_deferred = false;   ///< apply_gravity left m_i g to integrate_grid, right after it
   bool momentum_remapped = false;  ///< update_particles summed p_i = Σ S m v^{n+1} (MUSL) for map_velocities_to_grid
   std::vector<double> spin_dt;     ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
   /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.

@@ -1,12 +1,29 @@
 /// Grid (Lagrangian phase) stages: loads, integration, fixities.
+#include <algorithm>
 #include <cmath>
 
 #include "mpm/stages.hpp"
 
 namespace ffp::mpm {
 
+namespace {
+
+/// integrate_grid comes right after apply_gravity: it may add m_i g in its own
+/// loop over the nodes (one parallel region fewer; the same operation per node).
+bool gravity_fuses_with_integration(const Simulation& s) {
+  const std::vector<Stage>& stages = s.stages.items();
+  const auto it = std::ranges::find(stages, "apply_gravity", &Stage::name);
+  return it != stages.end() && it + 1 != stages.end() && (it + 1)->name == "integrate_grid";
+}
+
+}  // namespace
+
 // f_i^ext,z −= m_i g : Σ_p S_ip m_p g = m_i g by the partition of unity.
 void apply_gravity(Simulation& s) {
+  if (gravity_fuses_with_integration(s)) {
+    s.gravity_deferred = true;
+    return;
+  }
   const double g = *s.gravity_m_s2;
   for (NodalField& f : s.grid.fields) {
     const std::size_t n = f.size();
@@ -48,13 +65,18 @@ void apply_local_damping(Simulation& s) {
 }
 
 // v_i^n = p_i/m_i ;  v_i^{n+1} = v_i^n + Δt (f_i^int + f_i^ext)/m_i   (empty nodes: 0)
+// (f_i^ext,z −= m_i g first, when apply_gravity left it here.)
 void integrate_grid(Simulation& s) {
   const double dt = s.dt_s;
   const double floor = s.mass_floor_kg;
+  const bool gravity = s.gravity_deferred;
+  const double g = gravity ? *s.gravity_m_s2 : 0.0;
+  s.gravity_deferred = false;
   for (NodalField& f : s.grid.fields) {
     const std::size_t n = f.size();
     FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
     for (std::size_t i = 0; i < n; ++i) {
+      if (gravity) f.external_force_z[i] -= f.mass[i] * g;
       if (f.mass[i] > floor) {
         const double inverse_m = 1.0 / f.mass[i];
         f.velocity_r[i] = f.momentum_r[i] * inverse_m;

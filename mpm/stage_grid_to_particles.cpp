@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <span>
 
+#include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
 
 namespace ffp::mpm {
@@ -36,17 +38,39 @@ void update_particles_impl(Simulation& s) {
   auto update = [&](std::size_t p) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
+    // S_ip and the nodes, formed once for the gather and the remap.
+    // S_ip of nodes a = 0, 1 of each row as a pair (mpm/pair.hpp), node 2 alone: the
+    // same products, and each sum takes its terms in the same order, as node by node.
+    const Pair wr01 = pair(w.wr[0], w.wr[1]);
+    Pair N01[S];
+    double N2[S];
+    std::size_t node[S];
+    for (int b = 0; b < S; ++b) {
+      node[b] = s.grid.node(w.node_r, w.node_z + b);
+      N01[b] = wr01 * w.wz[b];
+      if constexpr (S == 3) N2[b] = w.wr[2] * w.wz[b];
+    }
     if (p < n) {  // not a subcycled body's particle
+      const double* __restrict v_r = f.velocity_r.data();
+      const double* __restrict v_z = f.velocity_z.data();
+      const double* __restrict v_new_r = f.velocity_new_r.data();
+      const double* __restrict v_new_z = f.velocity_new_z.data();
       double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
       for (int b = 0; b < S; ++b) {
-        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-        for (int a = 0; a < S; ++a) {
-          const std::size_t i = row + static_cast<std::size_t>(a);
-          const double N = w.wr[a] * w.wz[b];
-          vr += N * f.velocity_new_r[i];
-          vz += N * f.velocity_new_z[i];
-          dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
-          dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+        const std::size_t i = node[b];
+        const Pair new_r = load(v_new_r + i), new_z = load(v_new_z + i);
+        const Pair tr = N01[b] * new_r, tz = N01[b] * new_z;
+        const Pair dr = N01[b] * (new_r - load(v_r + i)), dz = N01[b] * (new_z - load(v_z + i));
+        vr = vr + tr[0] + tr[1];
+        vz = vz + tz[0] + tz[1];
+        dvr = dvr + dr[0] + dr[1];
+        dvz = dvz + dz[0] + dz[1];
+        if constexpr (S == 3) {
+          const std::size_t k = i + 2;
+          vr += N2[b] * v_new_r[k];
+          vz += N2[b] * v_new_z[k];
+          dvr += N2[b] * (v_new_r[k] - v_r[k]);
+          dvz += N2[b] * (v_new_z[k] - v_z[k]);
         }
       }
       P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
@@ -59,13 +83,15 @@ void update_particles_impl(Simulation& s) {
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+      double* __restrict momentum_r = f.momentum_r.data();
+      double* __restrict momentum_z = f.momentum_z.data();
       for (int b = 0; b < S; ++b) {
-        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-        for (int a = 0; a < S; ++a) {
-          const std::size_t i = row + static_cast<std::size_t>(a);
-          const double N = w.wr[a] * w.wz[b];
-          f.momentum_r[i] += N * pr;
-          f.momentum_z[i] += N * pz;
+        const std::size_t i = node[b];
+        store(momentum_r + i, load(momentum_r + i) + N01[b] * pr);
+        store(momentum_z + i, load(momentum_z + i) + N01[b] * pz);
+        if constexpr (S == 3) {
+          momentum_r[i + 2] += N2[b] * pr;
+          momentum_z[i + 2] += N2[b] * pz;
         }
       }
     }
@@ -112,37 +138,88 @@ void move_particles_impl(Simulation& s) {
 
 using NodalArray = std::vector<double> NodalField::*;
 
+/// Δε_p, spin and V_p of one particle from the nodal velocities (vr, vz) of its field.
 template <int S>
-void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray velocity_z) {
+inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const double* __restrict vr,
+                                const double* __restrict vz, double dt, Voigt& de, double& spin_dt, double& volume) {
+  // Nodes a = 0, 1 of a row as a pair (mpm/pair.hpp): the same products, the
+  // sums in the same order as node by node.
+  double Lrr = 0.0, Lrz = 0.0, Lzr = 0.0, Lzz = 0.0, Ltt = 0.0;
+  const Pair wr01 = pair(w.wr[0], w.wr[1]), gr01 = pair(w.gr[0], w.gr[1]);
+  for (int b = 0; b < S; ++b) {
+    const std::size_t i = grid.node(w.node_r, w.node_z + b);
+    const double wz = w.wz[b], gz = w.gz[b];
+    const Pair N = wr01 * wz, Gr = gr01 * wz, Gz = wr01 * gz;
+    const Pair vr01 = load(vr + i), vz01 = load(vz + i);
+    const Pair rr = vr01 * Gr, rz = vr01 * Gz, zr = vz01 * Gr, zz = vz01 * Gz, tt = vr01 * N;
+    Lrr = Lrr + rr[0] + rr[1];
+    Lrz = Lrz + rz[0] + rz[1];
+    Lzr = Lzr + zr[0] + zr[1];
+    Lzz = Lzz + zz[0] + zz[1];
+    Ltt = Ltt + tt[0] + tt[1];
+    if constexpr (S == 3) {
+      const std::size_t k = i + 2;
+      const double N2 = w.wr[2] * wz, Gr2 = w.gr[2] * wz, Gz2 = w.wr[2] * gz;
+      Lrr += vr[k] * Gr2;
+      Lrz += vr[k] * Gz2;
+      Lzr += vz[k] * Gr2;
+      Lzz += vz[k] * Gz2;
+      Ltt += vr[k] * N2;
+    }
+  }
+  Ltt *= w.inverse_r;
+  de << dt * Lrr, dt * Lzz, dt * Ltt, 0.5 * dt * (Lrz + Lzr), 0.0, 0.0;
+  spin_dt = 0.5 * dt * (Lrz - Lzr);
+  const double J = ((1.0 + dt * Lrr) * (1.0 + dt * Lzz) - dt * dt * Lrz * Lzr) * (1.0 + dt * Ltt);
+  volume *= J;
+}
+
+/// The same for particles first..last of `index` (p = index(k)).
+template <int S, class Index>
+void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, Index&& index, NodalArray velocity_r,
+                          NodalArray velocity_z) {
   Particles& P = s.particles;
   const double dt = s.dt_s;
   const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
-  FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
-  for (std::size_t p = 0; p < n; ++p) {
-    const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-    const double* vr = (f.*velocity_r).data();
-    const double* vz = (f.*velocity_z).data();
-    const ShapeWeights& w = s.weights[p];
-    double Lrr = 0.0, Lrz = 0.0, Lzr = 0.0, Lzz = 0.0, Ltt = 0.0;
-    for (int b = 0; b < S; ++b) {
-      const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-      for (int a = 0; a < S; ++a) {
-        const std::size_t i = row + static_cast<std::size_t>(a);
-        const double N = w.wr[a] * w.wz[b], Gr = w.gr[a] * w.wz[b], Gz = w.wr[a] * w.gz[b];
-        Lrr += vr[i] * Gr;
-        Lrz += vr[i] * Gz;
-        Lzr += vz[i] * Gr;
-        Lzz += vz[i] * Gz;
-        Ltt += vr[i] * N;
-      }
-    }
-    Ltt *= w.inverse_r;
-    Voigt& de = s.strain_increment[p];
-    de << dt * Lrr, dt * Lzz, dt * Ltt, 0.5 * dt * (Lrz + Lzr), 0.0, 0.0;
-    s.spin_dt[p] = 0.5 * dt * (Lrz - Lzr);
-    const double J = ((1.0 + dt * Lrr) * (1.0 + dt * Lzz) - dt * dt * Lrz * Lzr) * (1.0 + dt * Ltt);
-    P.volume[p] *= J;
+  const Grid& grid = s.grid;
+  const ShapeWeights* weights = s.weights.data();
+  Voigt* strain_increment = s.strain_increment.data();
+  double* spin = s.spin_dt.data();
+  double* volume = P.volume.data();
+  for (std::size_t k = first; k < last; ++k) {
+    const std::size_t p = index(k);
+    if (p >= n) continue;
+    const NodalField& f = grid.fields[s.bodies[P.body[p]].field];
+    strain_increment_of<S>(grid, weights[p], (f.*velocity_r).data(), (f.*velocity_z).data(), dt, strain_increment[p],
+                           spin[p], volume[p]);
   }
+}
+
+template <int S>
+void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray velocity_z) {
+  const auto n = static_cast<std::ptrdiff_t>(s.main_step_end);
+  const auto identity = [](std::size_t k) { return k; };
+  FFP_OMP(omp parallel for schedule(static) if (s.main_step_end >= kParallelMinimum))
+  for (std::ptrdiff_t c = 0; c < n; c += 512) {
+    const auto first = static_cast<std::size_t>(c);
+    strain_increments_of<S>(s, first, std::min(first + 512, static_cast<std::size_t>(n)), identity, velocity_r,
+                            velocity_z);
+  }
+}
+
+NodalArray strain_velocity_r(StrainVelocity source) {
+  return source == StrainVelocity::remapped ? &NodalField::velocity_r : &NodalField::velocity_new_r;
+}
+NodalArray strain_velocity_z(StrainVelocity source) {
+  return source == StrainVelocity::remapped ? &NodalField::velocity_z : &NodalField::velocity_new_z;
+}
+
+/// smooth_volumetric_strain comes right after compute_strain_increments: it may
+/// make the increments itself, strip by strip (strains_fused_with_smoothing).
+bool strain_fuses_with_smoothing(const Simulation& s) {
+  const std::vector<Stage>& stages = s.stages.items();
+  const auto it = std::ranges::find(stages, "compute_strain_increments", &Stage::name);
+  return it != stages.end() && it + 1 != stages.end() && (it + 1)->name == "smooth_volumetric_strain";
 }
 
 }  // namespace
@@ -180,14 +257,31 @@ void move_particles(Simulation& s) {
 
 // L_p = Σ_i v_i ⊗ G_ip,  L_θθ = Σ_i S_ip v_r,i / r_p  (hoop strain rate v_r/r);
 // Δε = Δt sym(L),  spin W_rz Δt = ½ Δt (L_rz − L_zr);  V_p ← V_p det(I + Δt L)
+// (When smooth_volumetric_strain follows, it makes them, strip by strip, in the
+// pass that sums the strip's cells: strain_increments_of_strip.)
 void compute_strain_increments(Simulation& s, StrainVelocity source) {
-  const bool remapped = source == StrainVelocity::remapped;
-  const NodalArray vr = remapped ? &NodalField::velocity_r : &NodalField::velocity_new_r;
-  const NodalArray vz = remapped ? &NodalField::velocity_z : &NodalField::velocity_new_z;
+  if (strain_fuses_with_smoothing(s)) {
+    s.strain_deferred = true;
+    s.strain_source = source;
+    return;
+  }
+  const NodalArray vr = strain_velocity_r(source);
+  const NodalArray vz = strain_velocity_z(source);
   if (s.settings.shape_function == ShapeFunction::linear) {
     strain_increments_impl<2>(s, vr, vz);
   } else {
     strain_increments_impl<3>(s, vr, vz);
+  }
+}
+
+void strain_increments_of_strip(Simulation& s, std::span<const std::uint32_t> strip) {
+  const NodalArray vr = strain_velocity_r(s.strain_source);
+  const NodalArray vz = strain_velocity_z(s.strain_source);
+  const auto index = [&](std::size_t k) { return static_cast<std::size_t>(strip[k]); };
+  if (s.settings.shape_function == ShapeFunction::linear) {
+    strain_increments_of<2>(s, 0, strip.size(), index, vr, vz);
+  } else {
+    strain_increments_of<3>(s, 0, strip.size(), index, vr, vz);
   }
 }
 

@@ -35,7 +35,12 @@ void smooth_volumetric_strain(Simulation& s) {
   s.cell_volumetric_strain.assign(slots, 0.0);
   // Per strip (whose cells no other strip touches): the cell sums, then the
   // shift of the same particles, in one pass over the strip's data.
+  const bool make_strain = s.strain_deferred;
+  s.strain_deferred = false;
   s.bins.for_each_strip([&](int, std::span<const std::uint32_t> strip) {
+    // Each particle's increment is its own (no sums across particles): the same
+    // bits made here in strip order as in compute_strain_increments' index order.
+    if (make_strain) strain_increments_of_strip(s, strip);
     for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       s.cell_volume[k] += P.volume[p];
       s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);

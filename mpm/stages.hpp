@@ -43,9 +43,11 @@ void update_particles(Simulation& s);           ///< FLIP/PIC velocity; position
 void move_particles(Simulation& s);             ///< musl_remapped: position from the remapped velocities
 void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i (sum from update_particles)
 
-enum class StrainVelocity : std::uint8_t { updated_grid, remapped };
 void compute_strain_increments(Simulation& s, StrainVelocity source);  ///< Δε, spin, volume
 void smooth_volumetric_strain(Simulation& s);                          ///< cell-averaged Δε_vol
+/// Δε, spin and volume of a strip's particles (smooth_volumetric_strain, when
+/// compute_strain_increments deferred them: Simulation::strain_deferred).
+void strain_increments_of_strip(Simulation& s, std::span<const std::uint32_t> strip);
 void smooth_strain_increment(Simulation& s);  ///< cell-averaged whole Δε (strain_smoothing full)
 void update_stresses(Simulation& s);          ///< Jaumann rotation, then the law
 void update_time_step(Simulation& s);         ///< CFL Δt for the next step (or check a fixed Δt)
