@@ -41,6 +41,21 @@ Diagnostics measure_body(const Simulation& s, std::size_t body) {
   return measure_range(s, s.bodies.at(body).begin, s.bodies.at(body).end);
 }
 
+double kinetic_energy_body(const Simulation& s, std::size_t body) {
+  const Particles& P = s.particles;
+  const std::size_t begin = s.bodies.at(body).begin, end = s.bodies.at(body).end;
+  double kinetic = 0.0;
+  for (const MaterialGroup& group : s.groups) {  // measure_range's order
+    const std::size_t first = std::max(begin, group.begin), last = std::min(end, group.end);
+    for (std::size_t p = first; p < last; ++p) {
+      const double m = P.mass[p];
+      const double v2 = P.vr[p] * P.vr[p] + P.vz[p] * P.vz[p];
+      kinetic += 0.5 * m * v2;
+    }
+  }
+  return kinetic * kTwoPi;
+}
+
 double vertical_internal_force_N(const NodalField& field, const std::vector<std::size_t>& nodes) {
   double sum = 0.0;
   for (std::size_t i : nodes) sum += field.internal_force_z[i];

@@ -22,6 +22,10 @@ struct Diagnostics {
 Diagnostics measure(const Simulation& simulation);
 /// The same, for one body's particles.
 Diagnostics measure_body(const Simulation& simulation, std::size_t body);
+/// measure_body(...).kinetic_energy_J bit for bit (the same sum in the same order), without
+/// the other figures: the FFP history takes it at every row, and the elastic energy's law
+/// lookup per particle were most of its cost.
+double kinetic_energy_body(const Simulation& simulation, std::size_t body);
 
 /// Σ over the given nodes of a field's vertical internal force, full 2π (N):
 /// the soil reaction the rigid-body stage (paper eq. 1) sums over contact nodes.

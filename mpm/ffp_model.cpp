@@ -233,6 +233,9 @@ double FfpRun::soil_intrusion_m() const {
   double deepest = 0.0;
   for (std::size_t p = soil.begin; p < soil.end; ++p) {
     if (P.r[p] >= R || P.z[p] <= tip || P.z[p] >= top) continue;  // outside the outline's bounding box
+    // Outside the outline the signed distance is ≥ 0 and never the deepest (which starts at 0):
+    // the side test spares the distance of the soil particles in the box but outside the outline.
+    if (!geometry_.inside(P.r[p], P.z[p], tip)) continue;
     deepest = std::max(deepest, -geometry_.query(P.r[p], P.z[p], tip).signed_distance_m);
   }
   return deepest;

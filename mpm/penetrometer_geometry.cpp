@@ -104,8 +104,7 @@ SurfaceQuery PenetrometerGeometry::query(double r, double z_global, double tip_z
   // Cylinder and flat top.
   consider_segment(best, r, z, radius, fillet_center_z_, radius, top_z_, 1.0, 0.0);
   consider_segment(best, r, z, radius, top_z_, 0.0, top_z_, 0.0, 1.0);
-  const bool inside = z >= 0.0 && z <= top_z_ && r < radius_at(z);
-  return {inside ? -best.distance : best.distance, best.normal_r, best.normal_z};
+  return {inside_local(r, z) ? -best.distance : best.distance, best.normal_r, best.normal_z};
 }
 
 }  // namespace ffp::mpm

@@ -3,6 +3,8 @@
 /// flat one: apex angle 180°, the punch of the bearing benchmarks), a rounded
 /// edge and a cylindrical body with a flat top. The contact stage takes
 /// its normals from here rather than from a noisy mass gradient.
+#include <cmath>
+
 namespace ffp::mpm {
 
 struct PenetrometerShape {
@@ -34,8 +36,15 @@ class PenetrometerGeometry {
   /// Outer radius of the outline at height h above the tip (0 outside [0, length]).
   double radius_at(double height_above_tip_m) const;
   bool contains(double r_m, double z_m, double tip_z_m) const { return query(r_m, z_m, tip_z_m).signed_distance_m < 0; }
+  /// query()'s side test alone: true where its signed distance is ≤ 0 (< 0 but on the
+  /// outline itself), so that a search for the points inside can skip the distance of
+  /// the others (their signed distance is ≥ 0).
+  bool inside(double r_m, double z_m, double tip_z_m) const { return inside_local(std::abs(r_m), z_m - tip_z_m); }
 
  private:
+  /// Tip at the origin, r ≥ 0.
+  bool inside_local(double r, double z) const { return z >= 0.0 && z <= top_z_ && r < radius_at(z); }
+
   PenetrometerShape shape_;
   double sin_half_ = 0, cos_half_ = 0;
   double cone_end_r_ = 0, cone_end_z_ = 0;  // cone–fillet tangent point

@@ -187,6 +187,7 @@ void RigidPenetrometer::project_particles(Simulation& s) {
     for (std::size_t p = body.begin; p < body.end; ++p) {
       const double r = P.r[p], z = P.z[p];
       if (r >= R || z <= tip || z >= top) continue;  // outside the outline's bounding box (as soil_intrusion_m)
+      if (!geometry_.inside(r, z, tip)) continue;    // a signed distance ≥ 0: not projected
       const SurfaceQuery q = geometry_.query(r, z, tip);
       if (!(q.signed_distance_m < 0.0)) continue;
       const double depth = -q.signed_distance_m;

@@ -107,38 +107,63 @@ void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream
   script << "\nset size noratio\n";
 }
 
+/// The queue of the PlotBatch alive on this thread, if any.
+thread_local std::vector<PlotBatch::Item>* active_batch = nullptr;
+
+/// One figure's script: the terminal, its output file and the panels.
+std::string figure_script(const std::string& body, const fs::path& output_png, int width, int height) {
+  std::ostringstream script;
+  script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
+  script << "set output " << quoted(output_png.string()) << "\n";
+  // Plain text: '_' in scene names must not turn into subscripts.
+  script << "set termoption noenhanced\nset grid\nset encoding utf8\n" << body << "unset output\n";
+  return script.str();
+}
+
+/// Runs gnuplot on a script file (removed afterwards); its exit status is 0 and `log` empty on success.
+int run_gnuplot(const fs::path& script_file, std::string& log) {
+  const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
+  int status = -1;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) log += buffer;
+    status = ::pclose(pipe);
+  }
+  std::error_code ignored;
+  fs::remove(script_file, ignored);
+  return status;
+}
+
+bool render_now(const std::string& body, const fs::path& png, int width, int height) {
+  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
+  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
+  {
+    std::ofstream script(script_file);
+    script << figure_script(body, temporary_png, width, height);
+  }
+  std::string log;
+  const int status = run_gnuplot(script_file, log);
+  std::error_code ignored;
+  if (status != 0 || !fs::exists(temporary_png)) {
+    fs::remove(temporary_png, ignored);
+    std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
+    return false;
+  }
+  fs::rename(temporary_png, png);
+  return true;
+}
+
 bool render(const std::string& body, const fs::path& png, int width, int height) {
   if (!gnuplot_available()) {
     static std::once_flag warned;
     std::call_once(warned, [] { std::fputs("warning: gnuplot not found: plots are skipped\n", stderr); });
     return false;
   }
-  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
-  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
-  {
-    std::ofstream script(script_file);
-    script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
-    script << "set output " << quoted(temporary_png.string()) << "\n";
-    // Plain text: '_' in scene names must not turn into subscripts.
-    script << "set termoption noenhanced\nset grid\nset encoding utf8\n" << body << "unset output\n";
-  }
-  const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
-  std::string log;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) log += buffer;
-    const int status = ::pclose(pipe);
-    std::error_code ignored;
-    fs::remove(script_file, ignored);
-    if (status != 0 || !fs::exists(temporary_png)) {
-      fs::remove(temporary_png, ignored);
-      std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
-      return false;
-    }
-    fs::rename(temporary_png, png);
+  if (active_batch != nullptr) {
+    active_batch->push_back({body, png, width, height});
     return true;
   }
-  return false;
+  return render_now(body, png, width, height);
 }
 
 }  // namespace
@@ -173,6 +198,44 @@ bool write_png_stack(const std::vector<Plot>& plots, const fs::path& png, int wi
   for (const auto& p : plots) write_panel(script, p, data, block);
   script << "unset multiplot\n";
   return render(data.str() + script.str(), png, width_px, panel_height_px * static_cast<int>(plots.size()));
+}
+
+PlotBatch::PlotBatch() {
+  if (active_batch != nullptr) throw std::logic_error("PlotBatch: batches do not nest");
+  active_batch = &items_;
+}
+
+PlotBatch::~PlotBatch() { active_batch = nullptr; }
+
+void PlotBatch::finish() {
+  if (items_.empty()) return;
+  const std::vector<Item> items = std::move(items_);
+  items_.clear();
+  const std::string pid = std::to_string(::getpid());
+  std::vector<fs::path> temporary(items.size());
+  const fs::path script_file = items.front().png.string() + ".gp-batch-" + pid;
+  {
+    std::ofstream script(script_file);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      temporary[i] = items[i].png.string() + ".tmp-" + pid + "-" + std::to_string(i);
+      // reset: every figure starts from gnuplot's defaults, as in a process of its own
+      // (terminal and output are not reset, and each figure sets its own); its
+      // data blocks go with it.
+      script << "reset\n"
+             << figure_script(items[i].body, temporary[i], items[i].width_px, items[i].height_px) << "undefine $*\n";
+    }
+  }
+  std::string log;
+  const int status = run_gnuplot(script_file, log);
+  bool complete = status == 0;
+  for (const auto& t : temporary) complete = complete && fs::exists(t);
+  std::error_code ignored;
+  if (complete) {
+    for (std::size_t i = 0; i < items.size(); ++i) fs::rename(temporary[i], items[i].png);
+    return;
+  }
+  for (const auto& t : temporary) fs::remove(t, ignored);
+  for (const auto& item : items) render_now(item.body, item.png, item.width_px, item.height_px);
 }
 
 }  // namespace ffp

@@ -1,6 +1,7 @@
 #pragma once
 /// PNG line plots through gnuplot (pngcairo). If gnuplot is not installed the
 /// plot is skipped with one warning on stderr: runs never fail for a figure.
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -58,5 +59,34 @@ bool write_png_row(const std::vector<ColourMap>& maps, const std::filesystem::pa
 
 /// True when a gnuplot executable is on PATH.
 bool gnuplot_available();
+
+/// While one is alive (on this thread), the figures above are queued instead of
+/// drawn (they return true when gnuplot is on PATH), and finish() draws them all in
+/// one gnuplot process, each from a `reset`: the same bytes as one process per figure
+/// (tests/reports/plot_test.cpp), without gnuplot's start-up for each (loading its
+/// libraries and fonts: ~0.07 s CPU a figure; an `ffp run` of an FFP draws six).
+/// Should gnuplot fail in the batch, each figure is drawn again on its own, so that
+/// the failure is warned about for its figure as without a batch. A batch that is
+/// destroyed unfinished (a run that failed or was interrupted) draws nothing.
+/// Batches do not nest.
+class PlotBatch {
+ public:
+  PlotBatch();
+  ~PlotBatch();
+  PlotBatch(const PlotBatch&) = delete;
+  PlotBatch& operator=(const PlotBatch&) = delete;
+  /// Draw the queued figures; the batch stays active (and empty) afterwards.
+  void finish();
+  std::size_t queued() const { return items_.size(); }
+
+  struct Item {
+    std::string body;
+    std::filesystem::path png;
+    int width_px, height_px;
+  };
+
+ private:
+  std::vector<Item> items_;
+};
 
 }  // namespace ffp

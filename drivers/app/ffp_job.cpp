@@ -159,9 +159,8 @@ void PenetrometerJob::record_row(CsvTable& history) {
                                            ffp.velocity_down_m_s(), st.impulse_N_s, weight_N());
   std::vector<double> row = {sample.time_s, sample.penetration_m, sample.velocity_m_s};
   if (!cpt()) row.push_back(sample.deceleration_g);
-  row.insert(row.end(),
-             {sample.reaction_N, static_cast<double>(st.contact_nodes),
-              mpm::measure_body(s, ffp.soil_body()).kinetic_energy_J, s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
+  row.insert(row.end(), {sample.reaction_N, static_cast<double>(st.contact_nodes),
+                         mpm::kinetic_energy_body(s, ffp.soil_body()), s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
   if (cpt()) row.push_back(1e-3 * sample.reaction_N / base_area_m2());
   if (!ffp.deformable()) row.insert(row.end(), {st.cone_impulse_N_s, st.cone_normal_impulse_N_s, st.shaft_impulse_N_s});
   history.add_row(row);
