@@ -38,8 +38,6 @@ void scatter_mass_momentum(Simulation& s) {
   s.bins.scatter([&](std::size_t p) { add_mass_momentum<S>(s, p, s.grid.fields[s.bodies[P.body[p]].field]); });
 }
 
-/// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle (σ_p with
-/// its cell's mean stress under strain smoothing).
 /// σ_p for the internal force: with strain smoothing, its cell's mean stress.
 inline Voigt particle_force_stress(const Simulation& s, std::size_t p, StrainSmoothing smoothing,
                                    const std::vector<double>& limit) {
@@ -59,6 +57,7 @@ inline Voigt particle_force_stress(const Simulation& s, std::size_t p, StrainSmo
   return sig;
 }
 
+/// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle.
 template <int S>
 inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, StrainSmoothing smoothing,
                                const std::vector<double>& limit) {
