@@ -26,7 +26,10 @@ std::string sensor_record(int rows_at_rest = 500, int rows_falling = 2000, int r
   std::ostringstream csv;
   csv << "time_s,acceleration_m_s2,pore_pressure_kPa\n";
   int k = 0;
-  auto row = [&](double a) { csv << 1e-4 * k++ << ',' << a << ',' << 0.5 * (k % 7) << '\n'; };
+  auto row = [&](double a) {
+    const double t = 1e-4 * k++;
+    csv << t << ',' << a << ',' << 0.5 * (k % 7) << '\n';
+  };
   for (int i = 0; i < rows_at_rest; ++i) row(g);
   for (int i = 0; i < rows_falling; ++i) row(0.0);
   for (int i = 0; i < rows_in_soil; ++i) row(6.0 * g);
