@@ -6,6 +6,7 @@
 
 #include "models/math_constants.hpp"
 #include "mpm/stages.hpp"
+#include "mpm/velocity_gradient.hpp"
 
 namespace ffp::mpm {
 
@@ -164,23 +165,20 @@ void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses)
     for (std::size_t p = first; p < last; ++p) {
       const ShapeWeights& w = s.weights[p];
       const std::int32_t* slots = &particle_nodes_[(p - first) * support];
-      double Lrr = 0.0, Lrz = 0.0, Lzr = 0.0, Lzz = 0.0, Ltt = 0.0;
+      VelocityGradient L;
       for (int bz = 0; bz < S; ++bz) {
         for (int a = 0; a < S; ++a) {
           const std::int32_t c = slots[bz * S + a];
           const double N = w.wr[a] * w.wz[bz], Gr = w.gr[a] * w.wz[bz], Gz = w.wr[a] * w.gz[bz];
-          Lrr += vr_[c] * Gr;
-          Lrz += vr_[c] * Gz;
-          Lzr += vz_[c] * Gr;
-          Lzz += vz_[c] * Gz;
-          Ltt += vr_[c] * N;
+          L.rr += vr_[c] * Gr;
+          L.rz += vr_[c] * Gz;
+          L.zr += vz_[c] * Gr;
+          L.zz += vz_[c] * Gz;
+          L.tt += vr_[c] * N;
         }
       }
-      Ltt *= w.inverse_r;
-      Voigt& de = s.strain_increment[p];
-      de << h * Lrr, h * Lzz, h * Ltt, 0.5 * h * (Lrz + Lzr), 0.0, 0.0;
-      s.spin_dt[p] = 0.5 * h * (Lrz - Lzr);
-      P.volume[p] *= ((1.0 + h * Lrr) * (1.0 + h * Lzz) - h * h * Lrz * Lzr) * (1.0 + h * Ltt);
+      L.tt *= w.inverse_r;
+      apply_velocity_gradient(L, h, s.strain_increment[p], s.spin_dt[p], P.volume[p]);
     }
     // Strain smoothing (smooth_volumetric_strain, this body's particles only).
     if (smoothed) {

@@ -14,5 +14,7 @@ inline Pair load(const double* x) {
   return v;
 }
 inline void store(double* x, Pair v) { std::memcpy(x, &v, sizeof v); }
+/// sum + x[0] + x[1], in that order: node a = 0's term, then a = 1's, as node by node.
+inline void add_lanes(double& sum, Pair x) { sum = sum + x[0] + x[1]; }
 
 }  // namespace ffp::mpm

@@ -7,6 +7,7 @@
 
 #include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
+#include "mpm/velocity_gradient.hpp"
 
 namespace ffp::mpm {
 
@@ -61,10 +62,10 @@ void update_particles_impl(Simulation& s) {
         const Pair new_r = load(v_new_r + i), new_z = load(v_new_z + i);
         const Pair tr = N01[b] * new_r, tz = N01[b] * new_z;
         const Pair dr = N01[b] * (new_r - load(v_r + i)), dz = N01[b] * (new_z - load(v_z + i));
-        vr = vr + tr[0] + tr[1];
-        vz = vz + tz[0] + tz[1];
-        dvr = dvr + dr[0] + dr[1];
-        dvz = dvz + dz[0] + dz[1];
+        add_lanes(vr, tr);
+        add_lanes(vz, tz);
+        add_lanes(dvr, dr);
+        add_lanes(dvz, dz);
         if constexpr (S == 3) {
           const std::size_t k = i + 2;
           vr += N2[b] * v_new_r[k];
@@ -144,34 +145,30 @@ inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const d
                                 const double* __restrict vz, double dt, Voigt& de, double& spin_dt, double& volume) {
   // Nodes a = 0, 1 of a row as a pair (mpm/pair.hpp): the same products, the
   // sums in the same order as node by node.
-  double Lrr = 0.0, Lrz = 0.0, Lzr = 0.0, Lzz = 0.0, Ltt = 0.0;
+  VelocityGradient L;
   const Pair wr01 = pair(w.wr[0], w.wr[1]), gr01 = pair(w.gr[0], w.gr[1]);
   for (int b = 0; b < S; ++b) {
     const std::size_t i = grid.node(w.node_r, w.node_z + b);
     const double wz = w.wz[b], gz = w.gz[b];
     const Pair N = wr01 * wz, Gr = gr01 * wz, Gz = wr01 * gz;
     const Pair vr01 = load(vr + i), vz01 = load(vz + i);
-    const Pair rr = vr01 * Gr, rz = vr01 * Gz, zr = vz01 * Gr, zz = vz01 * Gz, tt = vr01 * N;
-    Lrr = Lrr + rr[0] + rr[1];
-    Lrz = Lrz + rz[0] + rz[1];
-    Lzr = Lzr + zr[0] + zr[1];
-    Lzz = Lzz + zz[0] + zz[1];
-    Ltt = Ltt + tt[0] + tt[1];
+    add_lanes(L.rr, vr01 * Gr);
+    add_lanes(L.rz, vr01 * Gz);
+    add_lanes(L.zr, vz01 * Gr);
+    add_lanes(L.zz, vz01 * Gz);
+    add_lanes(L.tt, vr01 * N);
     if constexpr (S == 3) {
       const std::size_t k = i + 2;
       const double N2 = w.wr[2] * wz, Gr2 = w.gr[2] * wz, Gz2 = w.wr[2] * gz;
-      Lrr += vr[k] * Gr2;
-      Lrz += vr[k] * Gz2;
-      Lzr += vz[k] * Gr2;
-      Lzz += vz[k] * Gz2;
-      Ltt += vr[k] * N2;
+      L.rr += vr[k] * Gr2;
+      L.rz += vr[k] * Gz2;
+      L.zr += vz[k] * Gr2;
+      L.zz += vz[k] * Gz2;
+      L.tt += vr[k] * N2;
     }
   }
-  Ltt *= w.inverse_r;
-  de << dt * Lrr, dt * Lzz, dt * Ltt, 0.5 * dt * (Lrz + Lzr), 0.0, 0.0;
-  spin_dt = 0.5 * dt * (Lrz - Lzr);
-  const double J = ((1.0 + dt * Lrr) * (1.0 + dt * Lzz) - dt * dt * Lrz * Lzr) * (1.0 + dt * Ltt);
-  volume *= J;
+  L.tt *= w.inverse_r;
+  apply_velocity_gradient(L, dt, de, spin_dt, volume);
 }
 
 /// The same for particles first..last of `index` (p = index(k)).

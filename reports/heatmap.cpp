@@ -3,12 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <mutex>
 #include <sstream>
-
-#include <unistd.h>
 
 #include "reports/plot.hpp"
 
@@ -76,30 +73,13 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
     script << "plot $grid using 1:2:3 with image notitle\n";
   }
 
-  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
-  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(script_file);
+  return draw_with_gnuplot(png, [&](const fs::path& temporary_png) {
+    std::ostringstream out;
     out << "set terminal pngcairo size " << map.width_px << "," << map.height_px << " font 'Sans,10'\n";
     out << "set output " << quoted(temporary_png.string()) << "\nset encoding utf8\n"
         << script.str() << "unset output\n";
-  }
-  const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
-  std::string log;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return false;
-  char buffer[256];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) log += buffer;
-  const int status = ::pclose(pipe);
-  std::error_code ignored;
-  fs::remove(script_file, ignored);
-  if (status != 0 || !fs::exists(temporary_png)) {
-    fs::remove(temporary_png, ignored);
-    std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
-    return false;
-  }
-  fs::rename(temporary_png, png);
-  return true;
+    return out.str();
+  });
 }
 
 }  // namespace ffp

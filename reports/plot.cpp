@@ -135,22 +135,7 @@ int run_gnuplot(const fs::path& script_file, std::string& log) {
 }
 
 bool render_now(const std::string& body, const fs::path& png, int width, int height) {
-  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
-  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
-  {
-    std::ofstream script(script_file);
-    script << figure_script(body, temporary_png, width, height);
-  }
-  std::string log;
-  const int status = run_gnuplot(script_file, log);
-  std::error_code ignored;
-  if (status != 0 || !fs::exists(temporary_png)) {
-    fs::remove(temporary_png, ignored);
-    std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
-    return false;
-  }
-  fs::rename(temporary_png, png);
-  return true;
+  return draw_with_gnuplot(png, [&](const fs::path& output) { return figure_script(body, output, width, height); });
 }
 
 bool render(const std::string& body, const fs::path& png, int width, int height) {
@@ -167,6 +152,25 @@ bool render(const std::string& body, const fs::path& png, int width, int height)
 }
 
 }  // namespace
+
+bool draw_with_gnuplot(const fs::path& png, const std::function<std::string(const fs::path&)>& script_for) {
+  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
+  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
+  {
+    std::ofstream script(script_file);
+    script << script_for(temporary_png);
+  }
+  std::string log;
+  const int status = run_gnuplot(script_file, log);
+  std::error_code ignored;
+  if (status != 0 || !fs::exists(temporary_png)) {
+    fs::remove(temporary_png, ignored);
+    std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
+    return false;
+  }
+  fs::rename(temporary_png, png);
+  return true;
+}
 
 bool write_png(const Plot& plot, const fs::path& png) {
   std::ostringstream data, script;

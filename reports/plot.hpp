@@ -3,6 +3,7 @@
 /// plot is skipped with one warning on stderr: runs never fail for a figure.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,13 @@ bool write_png_row(const std::vector<ColourMap>& maps, const std::filesystem::pa
 
 /// True when a gnuplot executable is on PATH.
 bool gnuplot_available();
+
+/// Draws one PNG with gnuplot from the script that `script_for(temporary_png)` writes
+/// (it must set the terminal and its output to temporary_png): the script goes to a
+/// file beside `png`, and the picture is renamed to `png` only when gnuplot succeeds.
+/// On failure it warns on stderr with gnuplot's messages and returns false.
+bool draw_with_gnuplot(const std::filesystem::path& png,
+                       const std::function<std::string(const std::filesystem::path& temporary_png)>& script_for);
 
 /// While one is alive (on this thread), the figures above are queued instead of
 /// drawn (they return true when gnuplot is on PATH), and finish() draws them all in
