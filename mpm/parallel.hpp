@@ -14,6 +14,10 @@
 
 #include <cstddef>
 
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
 namespace ffp::mpm {
 
 /// Loops over fewer items than this run on one thread: a parallel region costs
@@ -23,5 +27,21 @@ inline constexpr std::size_t kParallelMinimum = 4096;
 /// Threads the MPM loops use (no-op without OpenMP).
 void set_thread_count(int threads);
 int thread_count();
+
+/// Inside a parallel region: the team's size and this thread's place in it (1 and 0 outside).
+inline int team_size() {
+#if defined(_OPENMP)
+  return omp_get_num_threads();
+#else
+  return 1;
+#endif
+}
+inline int team_member() {
+#if defined(_OPENMP)
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
 
 }  // namespace ffp::mpm

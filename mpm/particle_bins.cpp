@@ -26,10 +26,39 @@ void ParticleBins::build(std::span<const std::uint32_t> strip) {
 // chunk, offsets in (strip, chunk) order. The resulting order — by strip,
 // ascending index within a strip — is unique, so it is the same for any T.
 // (Count rows are offsets.size() = strips + 1 long; the last entry is unused.)
+// The chunks are the parts of the last build (nearly the same particles: each
+// thread counts the particles it has in cache); the first time, or when the
+// thread count or the particles changed, equal index ranges.
 void ParticleBins::begin_build(std::size_t n) {
   order.resize(n);
   chunks_ = thread_count();
-  counts_.assign(static_cast<std::size_t>(chunks_) * offsets.size(), 0u);
+  const auto T = static_cast<std::size_t>(chunks_);
+  if (part_particle_.size() != T + 1 || part_particle_.back() != n) {
+    part_particle_.resize(T + 1);
+    for (std::size_t t = 0; t <= T; ++t) part_particle_[t] = n * t / T;
+  }
+  counts_.assign(T * offsets.size(), 0u);
+}
+
+// Part t ends at the strip boundary nearest to t·n/T particles.
+void ParticleBins::partition(int parts) {
+  const auto T = static_cast<std::size_t>(parts);
+  const int last_strip = strips();
+  const std::size_t n = offsets[static_cast<std::size_t>(last_strip)];
+  part_strip_.assign(T + 1, last_strip);
+  part_strip_[0] = 0;
+  int s = 0;
+  for (std::size_t t = 1; t < T; ++t) {
+    const std::size_t target = n * t / T;
+    while (s < last_strip && offsets[static_cast<std::size_t>(s) + 1] <= target) ++s;
+    int cut = s;
+    if (s < last_strip &&
+        offsets[static_cast<std::size_t>(s) + 1] - target < target - offsets[static_cast<std::size_t>(s)])
+      cut = s + 1;
+    part_strip_[t] = std::max(cut, part_strip_[t - 1]);
+  }
+  part_particle_.resize(T + 1);
+  for (std::size_t t = 0; t <= T; ++t) part_particle_[t] = offsets[static_cast<std::size_t>(part_strip_[t])];
 }
 
 void ParticleBins::finish_build(std::span<const std::uint32_t> strip) {
@@ -52,6 +81,7 @@ void ParticleBins::finish_build(std::span<const std::uint32_t> strip) {
     std::uint32_t* next = counts(t);
     for (std::size_t p = first; p < last; ++p) order[next[strip[p]]++] = static_cast<std::uint32_t>(p);
   }
+  partition(chunks_);
 }
 
 }  // namespace ffp::mpm

@@ -90,22 +90,26 @@ SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
   // collapsing under its own weight at Courant 1).
   double stiffest = 0.0, speed2 = 0.0, stress = 0.0;  // max 1/ρ, max |v|², max |σ|
   long bad = 0;
-  const auto begin = static_cast<std::ptrdiff_t>(g.begin), end = static_cast<std::ptrdiff_t>(g.end);
-  FFP_OMP(omp parallel for schedule(static) reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
-              if (g.size() >= kParallelMinimum))
-  for (std::ptrdiff_t k = begin; k < end; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    const double inverse_density = p.volume[i] / p.mass[i];
-    const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
-    const Voigt& sig = p.stress[i];
-    // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
-    const double bound =
-        std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
-    if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
-      ++bad;
-    stiffest = std::max(stiffest, inverse_density);
-    speed2 = std::max(speed2, v2);
-    stress = std::max(stress, bound);
+  // Each thread its own part's particles (mpm/particle_bins.hpp); max and count are exact in any order.
+  const bool ready = s.bins.covers(p.size());
+  const int parts = ready ? s.bins.parts() : 1;
+  FFP_OMP(omp parallel reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
+              if (ready && g.size() >= kParallelMinimum))
+  for (int part = team_member(); part < parts; part += team_size()) {
+    const auto [from, to] = ready ? s.bins.particle_range(part) : std::pair<std::size_t, std::size_t>{0, p.size()};
+    for (std::size_t i = std::max(from, g.begin); i < std::min(to, g.end); ++i) {
+      const double inverse_density = p.volume[i] / p.mass[i];
+      const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
+      const Voigt& sig = p.stress[i];
+      // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
+      const double bound =
+          std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
+      if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
+        ++bad;
+      stiffest = std::max(stiffest, inverse_density);
+      speed2 = std::max(speed2, v2);
+      stress = std::max(stress, bound);
+    }
   }
   // A disconnected particle is stress-free; it reconnects at the disconnection density.
   if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);

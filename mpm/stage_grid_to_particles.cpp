@@ -104,9 +104,10 @@ void update_particles_impl(Simulation& s) {
     }
     s.bins.scatter(update);
     s.momentum_remapped = true;
-  } else {
-    FFP_OMP(omp parallel for schedule(static) if (n >= kParallelMinimum))
-    for (std::size_t p = 0; p < n; ++p) update(p);
+  } else {  // each thread its own part's particles (mpm/particle_bins.hpp)
+    s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
+      for (std::size_t p = first; p < last; ++p) update(p);
+    });
   }
   s.wall_clamps += clamps;
 }
@@ -117,23 +118,26 @@ void move_particles_impl(Simulation& s) {
   const double dt = s.dt_s;
   const Walls& walls = s.walls;
   const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
-  long clamps = 0;
-  FFP_OMP(omp parallel for schedule(static) reduction(+ : clamps) if (n >= kParallelMinimum))
-  for (std::size_t p = 0; p < n; ++p) {
-    const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-    const ShapeWeights& w = s.weights[p];
-    double vr = 0.0, vz = 0.0;
-    for (int b = 0; b < S; ++b) {
-      const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-      for (int a = 0; a < S; ++a) {
-        const std::size_t i = row + static_cast<std::size_t>(a);
-        const double N = w.wr[a] * w.wz[b];
-        vr += N * f.velocity_r[i];
-        vz += N * f.velocity_z[i];
+  std::atomic<long> clamps{0};            // rare (should stay 0)
+  s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
+    long clamped = 0;
+    for (std::size_t p = first; p < last; ++p) {
+      const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
+      const ShapeWeights& w = s.weights[p];
+      double vr = 0.0, vz = 0.0;
+      for (int b = 0; b < S; ++b) {
+        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
+        for (int a = 0; a < S; ++a) {
+          const std::size_t i = row + static_cast<std::size_t>(a);
+          const double N = w.wr[a] * w.wz[b];
+          vr += N * f.velocity_r[i];
+          vz += N * f.velocity_z[i];
+        }
       }
+      move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
     }
-    move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamps);
-  }
+    clamps += clamped;
+  });
   s.wall_clamps += clamps;
 }
 
@@ -194,14 +198,13 @@ void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, In
 
 template <int S>
 void strain_increments_impl(Simulation& s, NodalArray velocity_r, NodalArray velocity_z) {
-  const auto n = static_cast<std::ptrdiff_t>(s.main_step_end);
+  const std::size_t n = s.main_step_end;
   const auto identity = [](std::size_t k) { return k; };
-  FFP_OMP(omp parallel for schedule(static) if (s.main_step_end >= kParallelMinimum))
-  for (std::ptrdiff_t c = 0; c < n; c += 512) {
-    const auto first = static_cast<std::size_t>(c);
-    strain_increments_of<S>(s, first, std::min(first + 512, static_cast<std::size_t>(n)), identity, velocity_r,
-                            velocity_z);
-  }
+  // Each thread its own part's particles (mpm/particle_bins.hpp).
+  s.bins.for_each_particle_range(0, n, s.particles.size(), n >= kParallelMinimum,
+                                 [&](std::size_t first, std::size_t last) {
+                                   strain_increments_of<S>(s, first, last, identity, velocity_r, velocity_z);
+                                 });
 }
 
 NodalArray strain_velocity_r(StrainVelocity source) {
