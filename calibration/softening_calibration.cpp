@@ -337,17 +337,23 @@ class Calibration {
   }
 
   void scan(CalibrationResult& result) {
-    const int n = settings_.scan_points;
-    const double lo = std::log(settings_.eta_min), hi = std::log(settings_.eta_max);
     std::vector<double> etas;
-    for (int k = 0; k < n; ++k) etas.push_back(std::exp(lo + (hi - lo) * k / (n - 1)));
-    etas.front() = settings_.eta_min;  // exactly the bounds, not their rounded exp(log)
-    etas.back() = settings_.eta_max;
+    if (settings_.scan == WorkScan::bounds) {
+      const int n = settings_.scan_points;
+      const double lo = std::log(settings_.eta_min), hi = std::log(settings_.eta_max);
+      for (int k = 0; k < n; ++k) etas.push_back(std::exp(lo + (hi - lo) * k / (n - 1)));
+      etas.front() = settings_.eta_min;  // exactly the bounds, not their rounded exp(log)
+      etas.back() = settings_.eta_max;
+    } else {
+      etas.push_back(settings_.bracket_start_eta.value_or(
+          settings_.eta_start.value_or(std::sqrt(settings_.eta_min * settings_.eta_max))));
+    }
     for (double eta : settings_.scan_extra_eta)
       if (eta >= settings_.eta_min && eta <= settings_.eta_max) etas.push_back(eta);
     std::sort(etas.begin(), etas.end());
     etas.erase(std::unique(etas.begin(), etas.end()), etas.end());
     runs_.run_all(etas);  // side by side
+    if (settings_.scan == WorkScan::bracket) widen_until_bracketed(etas);
     std::vector<double> r(lab_.axial_strain.size());
     for (double eta : etas) {
       WorkSample s;
@@ -363,18 +369,60 @@ class Calibration {
       if (!(result.scan[k].work_J < result.scan[k - 1].work_J)) result.work_decreases_with_eta = false;
   }
 
+  /// WorkScan::bracket: one run at a time outward from the runs in `etas` (ascending)
+  /// until two of them straddle W_lab or the bound on the side it lies is run.
+  /// W decreases with η: W_lab above every run's W lies at smaller η, below at larger.
+  void widen_until_bracketed(std::vector<double>& etas) {
+    const double max_step = std::log(4.0), min_step = 0.1;
+    for (;;) {
+      std::vector<double> w;
+      for (double eta : etas) w.push_back(work_of(evaluate(eta)));
+      const bool above_all = work_lab_ > *std::max_element(w.begin(), w.end());
+      const bool below_all = work_lab_ < *std::min_element(w.begin(), w.end());
+      if (!above_all && !below_all) return;
+      // The edge run on W_lab's side and its neighbour; the bound ends the search.
+      const std::size_t n = etas.size();
+      const std::size_t edge = below_all ? n - 1 : 0;
+      const double bound = below_all ? settings_.eta_max : settings_.eta_min;
+      if (etas[edge] == bound) return;  // work_start reports W_lab beyond the bound
+      const double direction = below_all ? 1.0 : -1.0;
+      const double x_edge = std::log(etas[edge]);
+      double step = max_step;
+      if (n >= 2) {
+        // The secant through the edge and its neighbour, continued to W_lab (when it
+        // decreases, as W must); half as far again so that the next run lies past it.
+        const std::size_t next_in = below_all ? n - 2 : 1;
+        const double slope = (w[edge] - w[next_in]) / (x_edge - std::log(etas[next_in]));
+        if (slope < 0.0) step = std::clamp(1.5 * direction * (work_lab_ - w[edge]) / slope, min_step, max_step);
+      }
+      const double x_next = x_edge + direction * step;
+      const double eta = below_all ? (x_next >= std::log(bound) ? bound : std::exp(x_next))
+                                   : (x_next <= std::log(bound) ? bound : std::exp(x_next));
+      runs_.at(eta);
+      etas.insert(below_all ? etas.end() : etas.begin(), eta);
+    }
+  }
+
   /// ln η where the scan's W crosses W_lab: the monotone cubic through W(ln η) at the
   /// scan's points (calibration/monotone_crossing.hpp).
   double work_start(const CalibrationResult& result) const {
     const WorkSample& slowest = result.scan.front();
     const WorkSample& fastest = result.scan.back();
     const std::string bounds = "η ∈ [" + format(settings_.eta_min) + ", " + format(settings_.eta_max) + "]";
-    if (work_lab_ > std::max(slowest.work_J, fastest.work_J))
+    // The bounds' scan asks its ends; the bracket's, any two runs (its widening stops once
+    // two straddle W_lab, or at the bound, which is then an end).
+    double most = std::max(slowest.work_J, fastest.work_J), least = std::min(slowest.work_J, fastest.work_J);
+    if (settings_.scan == WorkScan::bracket)
+      for (const WorkSample& s : result.scan) {
+        most = std::max(most, s.work_J);
+        least = std::min(least, s.work_J);
+      }
+    if (work_lab_ > most)
       throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) +
                                " J, more than the model with " + "the slowest softening, W(η = " + format(slowest.eta) +
                                ") = " + format(slowest.work_J) + " J: no " + bounds +
                                " matches it (check E', φ'_p, φ'_c and ψ against the lab curve)");
-    if (work_lab_ < std::min(slowest.work_J, fastest.work_J))
+    if (work_lab_ < least)
       throw CalibrationFailure("the lab curve dissipates W_lab = " + format(work_lab_) +
                                " J, less than the model with " + "the fastest softening, W(η = " + format(fastest.eta) +
                                ") = " + format(fastest.work_J) + " J: no " + bounds +
@@ -384,7 +432,7 @@ class Calibration {
       x.push_back(std::log(s.eta));
       w.push_back(s.work_J);
     }
-    return monotone_crossing(x, w, work_lab_);  // the ends bracket W_lab: a crossing exists
+    return monotone_crossing(x, w, work_lab_);  // two runs straddle W_lab: a crossing exists
   }
 
   double curve_start(const CalibrationResult& result) const {
@@ -417,6 +465,8 @@ CalibrationResult calibrate_softening_factor(const LabCurve& lab, SpecimenRuns& 
   if (!(settings.eta_min > 0.0 && settings.eta_max > settings.eta_min))
     throw std::invalid_argument("calibrate_softening_factor: needs 0 < eta_min < eta_max");
   if (settings.scan_points < 2) throw std::invalid_argument("calibrate_softening_factor: scan_points must be ≥ 2");
+  if (settings.scan == WorkScan::bracket && settings.mode != CalibrationMode::dissipated_work)
+    throw std::invalid_argument("calibrate_softening_factor: the bracket scan needs the dissipated_work mode");
   if (settings.max_iterations < 1)
     throw std::invalid_argument("calibrate_softening_factor: max_iterations must be ≥ 1");
   if (!(settings.derivative_step > 0.0 && settings.derivative_step <= 0.5))
@@ -427,6 +477,9 @@ CalibrationResult calibrate_softening_factor(const LabCurve& lab, SpecimenRuns& 
     throw std::invalid_argument("calibrate_softening_factor: work_tolerance must be in [0, 1)");
   if (settings.eta_start && !(*settings.eta_start >= settings.eta_min && *settings.eta_start <= settings.eta_max))
     throw std::invalid_argument("calibrate_softening_factor: eta_start must lie in [eta_min, eta_max]");
+  if (settings.bracket_start_eta &&
+      !(*settings.bracket_start_eta >= settings.eta_min && *settings.bracket_start_eta <= settings.eta_max))
+    throw std::invalid_argument("calibrate_softening_factor: bracket_start_eta must lie in [eta_min, eta_max]");
   check_lab_curve(lab);
   return Calibration(lab, runs, settings).run();
 }

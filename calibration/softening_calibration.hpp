@@ -15,7 +15,8 @@
 ///   same specimen for both. Before the fit, W is evaluated on a log-spaced
 ///   scan of η over the bounds: it must decrease with η (more softening, less
 ///   area), and W_lab must lie in [W(η_max), W(η_min)], else the curve cannot
-///   be matched inside the bounds (CalibrationFailure).
+///   be matched inside the bounds (CalibrationFailure). Or (WorkScan::bracket)
+///   only as far out from the start as it takes for two runs to straddle W_lab.
 /// - curve_least_squares (for comparison): r_i = (q_model(ε_i) − q_lab(ε_i)) /
 ///   q_peak,lab at every lab strain ε_i, the model curve interpolated linearly.
 ///
@@ -71,6 +72,27 @@ inline std::string to_string(FitDerivative derivative) {
   return std::string(std::ranges::find(kFitDerivativeNames, derivative, &FitDerivativeName::first)->second);
 }
 
+/// Which η the dissipated-work check of W(η) runs before the fit (`scan`).
+enum class WorkScan {
+  /// scan_points log-spaced η over [η_min, η_max], bounds included, and scan_extra_eta:
+  /// W(η) seen over the whole range, whatever the start.
+  bounds,
+  /// bracket_start_eta (unset: eta_start, else √(η_min η_max)) and scan_extra_eta, then outward steps only while W_lab
+  /// is not yet between two runs: a step beyond the outermost run continues the secant
+  /// through it and its neighbour past the predicted crossing (by half as far again,
+  /// at least 0.1 and at most ln 4 in ln η), clamped to the bound; once the bound
+  /// is run and W_lab still lies beyond it, the same CalibrationFailure as `bounds`.
+  /// From a start near the answer (e.g. a coarser mesh's η) this runs 1–2 η beyond
+  /// the extra ones, where `bounds` runs scan_points. dissipated_work only.
+  bracket
+};
+using WorkScanName = std::pair<WorkScan, std::string_view>;
+inline constexpr auto kWorkScanNames =
+    std::to_array<WorkScanName>({{WorkScan::bounds, "bounds"}, {WorkScan::bracket, "bracket"}});
+inline std::string to_string(WorkScan scan) {
+  return std::string(std::ranges::find(kWorkScanNames, scan, &WorkScanName::first)->second);
+}
+
 struct CalibrationSettings {
   CalibrationMode mode = CalibrationMode::dissipated_work;
   double eta_min = 0.1;
@@ -78,7 +100,9 @@ struct CalibrationSettings {
   /// Where Ceres starts. Unset: from the scan — where its W crosses W_lab
   /// (log-linear), or its point of least squares for the curve criterion.
   std::optional<double> eta_start;
-  int scan_points = 9;  ///< log-spaced η over [η_min, η_max], ends included (≥ 2)
+  WorkScan scan = WorkScan::bounds;
+  std::optional<double> bracket_start_eta;  ///< bracket: the first η besides the extra ones
+  int scan_points = 9;                      ///< bounds: log-spaced η over [η_min, η_max], ends included (≥ 2)
   /// η the scan runs as well (those inside the bounds): curves the caller draws
   /// anyway (a scene's compare_eta), so their runs also bracket W_lab.
   std::vector<double> scan_extra_eta;

@@ -113,6 +113,7 @@ void write_calibration_summary(const CalibrationScene& scene, const CalibrationO
   s["concurrent_runs"] = o.concurrent_runs;
   s["derivative"] = to_string(scene.settings.derivative);
   s["fit_start"] = to_string(scene.fit_start);
+  s["scan"] = to_string(scene.settings.scan);
   s["termination"] = r.termination;
   s["converged"] = r.converged;
   s["at_bound"] = r.at_bound;

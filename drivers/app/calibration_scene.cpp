@@ -122,6 +122,13 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
   // A meshed specimen's run costs seconds to minutes: by default it scans the bounds, their
   // geometric mean and the compare_eta (run anyway), starts where that scan crosses W_lab
   // and takes its slopes from runs already made (one run per Ceres iteration).
+  spec.settings.scan = scene.choice("scan", kWorkScanNames, WorkScan::bounds);
+  if (spec.settings.scan == WorkScan::bracket) {
+    if (spec.settings.mode != CalibrationMode::dissipated_work)
+      scene.fail("scan", "'bracket' brackets W_lab: it needs mode dissipated_work");
+    if (scene.has("scan_points")) scene.fail("scan_points", "belongs to scan 'bounds' (the bracket widens as needed)");
+    spec.settings.bracket_start_eta = spec.eta_start;
+  }
   spec.settings.scan_points = scene.integer("scan_points", 2, 1000, mpm_specimen ? 3 : 9);
   spec.fit_start = scene.choice("fit_start", kFitStartNames, mpm_specimen ? FitStart::scan : FitStart::material_eta);
   if (spec.fit_start == FitStart::material_eta) spec.settings.eta_start = spec.eta_start;

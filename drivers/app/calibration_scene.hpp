@@ -35,6 +35,10 @@
 ///       radial_margin       empty grid beyond the radius, fraction of it (default 0.5)
 ///                        Each key belongs to one type: an element scene with mpm keys (or
 ///                        the other way round) is bad input.
+///   scan                 the W(η) check before the fit: bounds (default: scan_points log-spaced
+///                        η, the bounds included) | bracket (material.eta and the compare_eta,
+///                        then a run at a time outward until two runs straddle W_lab; for a
+///                        start near the answer, e.g. a coarser mesh's η; dissipated_work only)
 ///   scan_points          log-spaced η of the W(η) check, the bounds included (default: element
 ///                        9; mpm 3); the compare_eta inside the bounds are scanned as well
 ///   fit_start            where Ceres starts: material_eta | scan, where the scan's W crosses

@@ -115,6 +115,11 @@ TEST_CASE("calibration reader: calibration_dr15_mpm_2cm is the meshed specimen w
   CHECK(old_path.settings.eta_start == 8.0);
   CHECK(old_path.settings.derivative == FitDerivative::central);
   CHECK(old_path.settings.scan_points == 9);
+  CHECK(c.settings.scan == WorkScan::bounds);
+  const CalibrationScene bracket = calibration("calibration_dr15_mpm_2cm", {"scan=bracket", "material.eta=60"});
+  CHECK(bracket.settings.scan == WorkScan::bracket);
+  CHECK(bracket.settings.bracket_start_eta == 60.0);  // material.eta, whatever fit_start says
+  CHECK_FALSE(bracket.settings.eta_start.has_value());
   CHECK(calibration("calibration_dr15_mpm_2cm", {"specimen.platens=smooth", "specimen.shape_function=linear"})
             .mpm.platens == PlatenFriction::smooth);
   CHECK(calibration("calibration_dr15", {"mode=curve_least_squares"}).settings.mode ==
@@ -130,6 +135,14 @@ TEST_CASE("calibration reader: a bad key names itself and what it may be", "[app
         "derivative: 'forward' is not allowed: must be one of: central, secant");
   CHECK(calibration_error("calibration_dr15", "fit_start=middle") ==
         "fit_start: 'middle' is not allowed: must be one of: material_eta, scan");
+  CHECK(calibration_error("calibration_dr15", "scan=all") ==
+        "scan: 'all' is not allowed: must be one of: bounds, bracket");
+  CHECK(scene_error([] {
+          calibration("calibration_dr15", {"scan=bracket", "mode=curve_least_squares"});
+        }) == "scan: 'bracket' brackets W_lab: it needs mode dissipated_work");
+  CHECK(scene_error([] {
+          calibration("calibration_dr15", {"scan=bracket", "scan_points=5"});
+        }) == "scan_points: belongs to scan 'bounds' (the bracket widens as needed)");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.platens=sticky") ==
         "specimen.platens: 'sticky' is not allowed: must be one of: rough, smooth");
   CHECK(calibration_error("calibration_dr15_mpm_2cm", "specimen.shape_function=quad") ==

@@ -68,6 +68,12 @@ StrainSofteningParameters dr15_sand() {
   return p;
 }
 
+/// W_lab of a lab curve, as the calibration integrates it (the default specimen).
+double lab_work(const LabCurve& lab) {
+  return dissipated_work_J(lab.axial_strain, lab.deviatoric_stress_Pa, TriaxialSpecimen{}, lab.axial_strain.front(),
+                           lab.axial_strain.back());
+}
+
 }  // namespace
 
 TEST_CASE("specimen runs: each η runs once, side by side or not, with the same curves", "[calibration][runs]") {
@@ -234,4 +240,52 @@ TEST_CASE("calibration with secants on a jittery specimen: no run within the reu
       previous = std::log(eta);
     }
   }
+}
+
+TEST_CASE("bracket scan: from a start near the root, two more runs straddle W_lab and the fit finds the bounds' η",
+          "[calibration][runs][bracket]") {
+  // Root η = 6. The bounds' scan runs 0.1, 7.07, 500 and the extra 15; the bracket runs the
+  // start and the extra 15 (both past the root: W below W_lab), then one step down along
+  // their secant, past the crossing it predicts.
+  const SpecimenCurve truth = closed_form(6.0);
+  const LabCurve lab{"closed form", truth.axial_strain, truth.deviatoric_stress_Pa, {}};
+  CalibrationSettings bounds;
+  bounds.derivative = FitDerivative::secant;
+  bounds.derivative_step = 0.1;
+  bounds.parameter_tolerance = 1e-4;
+  bounds.work_tolerance = 2e-4;
+  bounds.scan_points = 3;
+  bounds.scan_extra_eta = {15.0};
+  CalibrationSettings bracket = bounds;
+  bracket.scan = WorkScan::bracket;
+  bracket.bracket_start_eta = 7.0;
+  const CalibrationResult a = calibrate_softening_factor(lab, closed_form, bounds);
+  const CalibrationResult b = calibrate_softening_factor(lab, closed_form, bracket);
+  INFO("bounds: " << a.model_runs << " runs, η = " << a.eta << "; bracket: " << b.model_runs << " runs, η = " << b.eta);
+  REQUIRE(b.scan.size() == 3);  // 7, 15 and one step down
+  CHECK(b.scan[0].eta < 6.0);   // the step went past the root
+  CHECK(b.scan[0].work_J > lab_work(lab));
+  CHECK(b.work_decreases_with_eta);
+  // |r| ≤ 2e-4 with dW/d ln η ≈ −0.05 W here: each within ~0.4 % of 6.
+  CHECK(a.eta == Approx(6.0).epsilon(5e-3));
+  CHECK(b.eta == Approx(6.0).epsilon(5e-3));
+  CHECK(b.model_runs < a.model_runs);
+}
+
+TEST_CASE("bracket scan: a W_lab beyond a bound is found at the bound and refused as with the bounds' scan",
+          "[calibration][runs][bracket][errors]") {
+  // η = 0.05 softens less than η_min = 0.1 allows: W_lab lies above W(0.1).
+  const SpecimenCurve truth = closed_form(0.05);
+  const LabCurve lab{"closed form", truth.axial_strain, truth.deviatoric_stress_Pa, {}};
+  CalibrationSettings s;
+  s.derivative = FitDerivative::secant;
+  s.derivative_step = 0.1;
+  s.scan = WorkScan::bracket;
+  s.bracket_start_eta = 50.0;
+  SpecimenRuns runs(closed_form);
+  CHECK_THROWS_AS(calibrate_softening_factor(lab, runs, s), CalibrationFailure);
+  CHECK(runs.has(0.1));      // it widened down to the bound
+  CHECK(runs.runs() <= 10);  // steps of up to ln 4 from 50 to 0.1: ln(500)/ln 4 ≈ 4.5, then the bound
+  s.mode = CalibrationMode::curve_least_squares;
+  CHECK_THROWS_AS(calibrate_softening_factor(lab, closed_form, s), std::invalid_argument);
 }
