@@ -119,7 +119,8 @@ struct ParticleBins {
   /// thread t, in one parallel region (`parallel`: big enough to share). Before the
   /// first build (the parts do not cover the n particles yet), one part.
   template <class Fn>
-  void for_each_particle_range(std::size_t begin, std::size_t end, std::size_t n, bool parallel, Fn&& fn) const {
+  void for_each_particle_range(std::size_t begin, std::size_t end, std::size_t n, [[maybe_unused]] bool parallel,
+                               Fn&& fn) const {
     const bool ready = covers(n);
     const int count = ready ? parts() : 1;
     FFP_OMP(omp parallel if (parallel && ready))
