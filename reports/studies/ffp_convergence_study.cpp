@@ -16,6 +16,9 @@ const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
 // The controls (pure FLIP; the tip half a cell off a node row) on the three coarser levels.
 constexpr std::size_t kControlLevels = 3;
 
+/// A level's expected wall time: particles grow as h⁻² and steps as h⁻¹; 1 cm takes about 5 s on one core.
+double level_wall_s(double h) { return 5.0 * std::pow(0.01 / h, 3); }
+
 /// The impulse of the soil on the FFP over 0–t (history.csv, linear between rows).
 double impulse_until(const CsvData& h, double t) {
   if (!h.has("impulse_N_s")) return std::nan("");
@@ -39,19 +42,18 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
   for (double h : kMinCells_m) {
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "min cell " + fixed(100 * h, 2) + " cm",
                                    {"mesh.min_cell_m=" + fixed(h, 4)}));
-    // Particles grow as h⁻² and steps as h⁻¹; 1 cm takes about 5 s on one core.
-    study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
+    study.runs.back().expected_wall_s = level_wall_s(h);
   }
   for (std::size_t l = 0; l < kControlLevels; ++l) {
     const double h = kMinCells_m[l];
     const std::string mesh = "mesh.min_cell_m=" + fixed(h, 4);
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "pure FLIP, " + fixed(100 * h, 2) + " cm",
                                    {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}));
-    study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);  // as the level's own run
+    study.runs.back().expected_wall_s = level_wall_s(h);  // as the level's own run
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json",
                                    "tip half a cell off, " + fixed(100 * h, 2) + " cm",
                                    {mesh, "mesh.tip_offset_cells=0.5", "output.field_times_s=[]"}));
-    study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
+    study.runs.back().expected_wall_s = level_wall_s(h);
   }
   study.write = [](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;

@@ -50,8 +50,8 @@ Study ffp_compressibility_study(const std::filesystem::path& scenes_dir) {
                 scene_run(scenes_dir, "ffp_elastic.json", "elastic FFP, E = 20 MPa"),
                 scene_run(scenes_dir, "ffp_steel.json", "elastic FFP, steel 200 GPa")};
   // ffp_steel.json is subcycled (solver.subcycle auto): the soil takes the rigid run's ~2,400 steps and the
-  // body ~140 substeps of its own CFL step in each (1 cm, one thread: 13.5 s CPU, 26 s wall on the loaded
-  // machine; the single step, ~3.5·10^5 steps, is --set solver.subcycle=off and takes ≥ 400 s CPU).
+  // body ~140 substeps of its own CFL step in each (1 cm, one thread: 12.5 s CPU; the single step,
+  // ~3.5·10^5 steps, is --set solver.subcycle=off and takes 348 s CPU).
   study.runs[2].expected_wall_s = 30;
   study.runs[1].expected_wall_s = 8;  // 6681 particles, ~2900 steps (its stiffer body's time step)
   study.write = [](const StudyResults& results, StudyOutput& out) {
