@@ -60,6 +60,8 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   };
   need(h > 0.0 && m.max_cell_m >= h && m.below_cell_m >= h, "mesh: need 0 < min_cell ≤ below_cell and ≤ max_cell");
   need(m.growth > 1.0 && m.growth <= 2.0, "mesh: growth must be in (1, 2]");
+  need(m.min_compressed_cell_m >= 0.0 && m.min_compressed_cell_m <= m.below_cell_m,
+       "mesh: need 0 ≤ min_compressed_cell ≤ below_cell");
   need(m.tip_offset_cells >= 0.0 && m.tip_offset_cells < 1.0, "mesh: tip_offset_cells must be in [0, 1)");
   need(R > 0.0 && R + h <= d.soil.radius_m, "the penetrometer's base radius plus a cell must fit inside the chamber");
   need(m.fine_radius_m > R, "mesh: fine_radius must exceed the penetrometer's base radius");
@@ -154,7 +156,7 @@ FfpRun::FfpRun(const FfpDescription& d)
     : description_(d),
       geometry_(d.shape),
       layout_(ffp_grid_layout(d)),
-      mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last),
+      mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last, d.mesh.min_compressed_cell_m),
       simulation_(build_model(d, layout_, geometry_)) {
   Simulation& s = simulation_;
   if (d.deformable) {

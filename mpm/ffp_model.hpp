@@ -52,15 +52,16 @@ struct FfpSoil {
 };
 
 struct FfpMesh {
-  double min_cell_m = 0.01;       ///< the fine cells around and below the tip
-  double max_cell_m = 0.03;       ///< far field (radial), above the fine band, the air
-  double fine_radius_m = 0.15;    ///< uniform radial cells up to here, then growth ×growth per cell
-  double band_below_m = 0.05;     ///< fine moving cells below the tip
-  double fine_above_m = 0.3;      ///< fine moving cells above the tip (where the soil beside the body ends up)
-  double below_cell_m = 0.02;     ///< initial cells of the compressing zone (they shrink as the FFP goes down)
-  double air_above_m = 0.1;       ///< stretching zone above the penetrometer's top
-  double growth = 1.2;            ///< largest ratio of neighbouring cells in graded zones
-  double tip_offset_cells = 0.0;  ///< the band's node rows this many cells above the tip's (0: the tip on a row)
+  double min_cell_m = 0.01;             ///< the fine cells around and below the tip
+  double max_cell_m = 0.03;             ///< far field (radial), above the fine band, the air
+  double fine_radius_m = 0.15;          ///< uniform radial cells up to here, then growth ×growth per cell
+  double band_below_m = 0.05;           ///< fine moving cells below the tip
+  double fine_above_m = 0.3;            ///< fine moving cells above the tip (where the soil beside the body ends up)
+  double below_cell_m = 0.02;           ///< initial cells of the compressing zone (they shrink as the FFP goes down)
+  double min_compressed_cell_m = 0.01;  ///< ... down to this height; then the band stops (0: no limit)
+  double air_above_m = 0.1;             ///< stretching zone above the penetrometer's top
+  double growth = 1.2;                  ///< largest ratio of neighbouring cells in graded zones
+  double tip_offset_cells = 0.0;        ///< the band's node rows this many cells above the tip's (0: the tip on a row)
 };
 
 struct DeformableFfp {

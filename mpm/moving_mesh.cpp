@@ -1,5 +1,7 @@
 #include "mpm/moving_mesh.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -7,11 +9,20 @@
 
 namespace ffp::mpm {
 
-MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_last)
+MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_last, double min_compressed_cell_m)
     : z0_(std::move(z_nodes)), band_first_(band_first), band_last_(band_last) {
   const int last = static_cast<int>(z0_.size()) - 1;
   if (!(band_first > 0 && band_first < band_last && band_last < last))
     throw std::invalid_argument("moving mesh: the band must leave at least one cell below and above it");
+  if (!(min_compressed_cell_m >= 0.0)) throw std::invalid_argument("moving mesh: the smallest cell must be ≥ 0");
+  // The zone [bottom, band bottom] compresses uniformly: its smallest cell, times the
+  // ratio below = (height + u)/height, reaches the limit at u = height (ratio − 1).
+  const auto lo = static_cast<std::size_t>(band_first);
+  const double height = z0_[lo] - z0_.front();
+  double smallest = height;
+  for (std::size_t j = 1; j <= lo; ++j) smallest = std::min(smallest, z0_[j] - z0_[j - 1]);
+  band_stop_m_ = min_compressed_cell_m > 0.0 ? height * (std::min(1.0, min_compressed_cell_m / smallest) - 1.0)
+                                             : -std::numeric_limits<double>::infinity();
 }
 
 std::vector<double> MovingMesh::coordinates(double u) const {
@@ -28,14 +39,18 @@ std::vector<double> MovingMesh::coordinates(double u) const {
                       (below <= 0.05 ? "the penetrometer went through the chamber; give a deeper soil.depth_m or a "
                                        "shorter end_time_s"
                                      : "it rebounded out of the grid; give a larger mesh.air_above_m"));
+  // The band follows the penetrometer down to band_stop_m_ only.
+  const double band = std::max(u, band_stop_m_);
+  const double band_below = (z0_[lo] + band - bottom) / (z0_[lo] - bottom);
+  const double band_above = (top - (z0_[hi] + band)) / (top - z0_[hi]);
   std::vector<double> z(n);
   for (std::size_t j = 0; j < n; ++j) {
     if (j <= lo) {
-      z[j] = bottom + (z0_[j] - bottom) * below;
+      z[j] = bottom + (z0_[j] - bottom) * band_below;
     } else if (j < hi) {
-      z[j] = z0_[j] + u;
+      z[j] = z0_[j] + band;
     } else {
-      z[j] = top - (top - z0_[j]) * above;
+      z[j] = top - (top - z0_[j]) * band_above;
     }
   }
   z.front() = bottom;  // the fixed ends stay exactly where they are

@@ -15,8 +15,8 @@
 ///   contact    {delta_deg | rough: true, velocity_scaling 0.75 (a cap on a correction's strain per step,
 ///               Bardenhagen 2001 as the paper's code applies it), detection_cells 0.5 (nodes this many
 ///               min cells outside the outline also touch: the contact surface centred on the outline)}
-///   mesh       {min_cell_m 0.01, max_cell_m 3·min, below_cell_m 2·min, fine_radius_m 0.15,
-///               band_below_m 0.05, fine_above_m 0.3, air_above_m 0.1, growth 1.2}
+///   mesh       {min_cell_m 0.01, max_cell_m 3·min, below_cell_m 2·min, min_compressed_cell_m min,
+///               fine_radius_m 0.15, band_below_m 0.05, fine_above_m 0.3, air_above_m 0.1, growth 1.2}
 ///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
 ///               pic_blend per_soil_step | per_step (the PIC share 1 − flip_fraction per soil CFL step
 ///               at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt: mpm/ffp_model.hpp),

@@ -148,6 +148,8 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   // Sizes default to multiples of min_cell_m, so that --set mesh.min_cell_m=… refines everything.
   mesh.max_cell_m = m.number("max_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 3.0 * h);
   mesh.below_cell_m = m.number("below_cell_m", Range::closed(h, 10.0, "m (≥ min_cell_m)"), 2.0 * h);
+  mesh.min_compressed_cell_m =
+      m.number("min_compressed_cell_m", Range::closed(0.0, mesh.below_cell_m, "m (≤ below_cell_m; 0: no limit)"), h);
   mesh.fine_radius_m =
       m.number("fine_radius_m", Range::open(d.shape.base_radius_m, kMaxLength_m, "m (> ffp.base_radius_m)"),
                std::max(0.15, d.shape.base_radius_m + 2.0 * h));
@@ -164,8 +166,8 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)
     m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
   m.finish(
-      "mesh (min_cell_m, max_cell_m, below_cell_m, fine_radius_m, band_below_m, fine_above_m, air_above_m, growth, "
-      "tip_offset_cells)");
+      "mesh (min_cell_m, max_cell_m, below_cell_m, min_compressed_cell_m, fine_radius_m, band_below_m, fine_above_m, "
+      "air_above_m, growth, tip_offset_cells)");
 }
 
 void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {

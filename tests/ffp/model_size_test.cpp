@@ -47,6 +47,7 @@ TEST_CASE("the size estimate stops counting once past its budget", "[ffp][size]"
   d.mesh.min_cell_m = 5e-4;  // ~10^6 nodes (0.5 GB) and millions of particles: counted up to the budget
   d.mesh.max_cell_m = 1.5e-3;
   d.mesh.below_cell_m = 1e-3;
+  d.mesh.min_compressed_cell_m = 5e-4;
   const ModelSize size = estimate_ffp_size(d, 1e9);
   REQUIRE(static_cast<double>(size.nodes) * ModelSize::kBytesPerNode < 0.9e9);
   CHECK(size.particles_at_least);

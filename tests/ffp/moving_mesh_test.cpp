@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "models/math_constants.hpp"
 #include "mpm/ffp_model.hpp"
@@ -32,6 +33,32 @@ TEST_CASE("moving mesh: the band translates, the zones below and above scale uni
   for (int j = 0; j < 3; ++j) CHECK(z[j + 1] - z[j] == Approx(below * (z0[j + 1] - z0[j])).epsilon(kExact));
   for (int j = 7; j < 9; ++j) CHECK(z[j + 1] - z[j] == Approx(above * (z0[j + 1] - z0[j])).epsilon(kExact));
   CHECK_THROWS_AS(mesh.coordinates(-0.29), StepFailure);  // the band would squeeze the zone below to ~3 %
+}
+
+TEST_CASE(
+    "moving mesh: the band stops where the compressing cells reach min_compressed_cell_m, the zones keep the "
+    "limit, and going through the chamber still throws",
+    "[ffp][moving_mesh]") {
+  // Compressing zone [−0.4, −0.1]: three 0.1 m cells; band −0.1 … 0.1.
+  const std::vector<double> z0 = {-0.4, -0.3, -0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.3, 0.5};
+  const MovingMesh free_mesh(z0, 3, 7), mesh(z0, 3, 7, 0.05);
+  // The cells reach 0.05 m when the zone is half its height: u = −0.15.
+  CHECK(mesh.band_stop_m() == Approx(-0.15).epsilon(kExact));
+  CHECK(free_mesh.band_stop_m() == -std::numeric_limits<double>::infinity());
+  const std::vector<double> above_stop = mesh.coordinates(-0.1);
+  const std::vector<double> free_above_stop = free_mesh.coordinates(-0.1);
+  for (std::size_t j = 0; j < z0.size(); ++j) CHECK(above_stop[j] == free_above_stop[j]);  // no change before the stop
+  for (double u : {-0.15, -0.2, -0.26}) {
+    INFO("u = " << u);
+    const std::vector<double> z = mesh.coordinates(u);
+    const std::vector<double> at_stop = free_mesh.coordinates(-0.15);
+    for (std::size_t j = 0; j < z0.size(); ++j) CHECK(z[j] == Approx(at_stop[j]).epsilon(kExact));
+    for (int j = 0; j < 3; ++j) CHECK(z[j + 1] - z[j] == Approx(0.05).epsilon(kExact));
+  }
+  CHECK_THROWS_AS(mesh.coordinates(-0.29), StepFailure);  // the penetrometer itself is at the bottom
+  CHECK_THROWS_AS(MovingMesh(z0, 3, 7, -0.01), std::invalid_argument);
+  // A limit at or above the zone's cells: the band never goes down.
+  CHECK(MovingMesh(z0, 3, 7, 0.2).band_stop_m() == 0.0);
 }
 
 TEST_CASE("FFP grid: a node on the base radius, fine cells no smaller than min_cell_m, band around the body",
