@@ -74,12 +74,27 @@ class StrainSofteningMohrCoulomb {
                                                           StateOutput::friction_angle, StateOutput::dilatancy_angle,
                                                           StateOutput::strain_rate};
 
+  double peak_friction_rad(const State& state) const;
+  double peak_dilatancy_rad(double mean_pressure_Pa) const;
   Peaks peaks(const State& state, double mean_pressure_Pa) const;
   MohrCoulombStrength strength(const Peaks& peaks, double decay) const;
+  /// strength(peaks, 0): the residual strength, without trigonometry unless
+  /// Bolton's ψ_p lies below ψ_r.
+  MohrCoulombStrength residual_strength(const Peaks& peaks) const;
+  /// True only where the trial is certainly inside the surface at the current
+  /// strength: the yield test with a lower bound on sin φ' that needs no trigonometry.
+  bool surely_elastic(const Eigen::Vector3d& trial, double peak_friction_rad, double plastic_deviatoric_strain) const;
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;
   ElasticStiffness elastic_stiffness_;  ///< λ, 2G for the trial stress
+  double deviatoric_compliance_;        ///< √(2/3)/2G: plastic deviatoric strain per unit |dev Δσ|
+  MohrCoulombStrength residual_;        ///< strength at ε_d^p → ∞ where ψ_p ≥ ψ_r
+  // The elastic screen (surely_elastic): valid where these bounds hold.
+  bool screen_ = false;
+  double screen_peak_max_rad_ = 0.0;  ///< the largest φ'_p the rate law can give
+  double sin_residual_ = 0.0;         ///< sin φ'_r
+  double sin_chord_slope_ = 0.0;      ///< (sin φ'_max − sin φ'_r)/(φ'_max − φ'_r)
 };
 
 }  // namespace ffp
