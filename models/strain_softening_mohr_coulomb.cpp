@@ -147,26 +147,52 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     return plastic_strain(strength(pk, decay_start * std::exp(-eta * increment))) - increment;
   };
 
-  double low = 0.0;
-  double residual_low = plastic_strain(strength_start);
+  const double residual_start = plastic_strain(strength_start);  // r(0) = g(0)
   double accepted = 0.0;
-  if (residual_low > 0.0) {
-    // Upper end: the return with the residual strength. Softening makes g grow
-    // with Δκ, so g(∞) usually bounds the root; widen if dilatancy decay says otherwise.
-    double high = plastic_strain(residual_strength(pk));
-    double residual_high = residual(high);
-    for (int widen = 0; residual_high > 0.0 && widen < 60; ++widen) {
-      high = std::max(2.0 * high, high + residual_high);
-      residual_high = residual(high);
-    }
-    // Δκ to 1e-12 relative, but never finer than the rounding of g itself.
+  if (residual_start > 0.0) {
+    // Δκ to 1e-12 of the explicit estimate g(0), but never finer than the rounding of g itself.
     const double rounding =
         8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance_ * trial_values.cwiseAbs().maxCoeff();
-    const double tolerance = 1e-12 * high + rounding;
-    accepted =
-        illinois_root(
-            residual, high, residual_high, low, residual_low, tolerance, [tolerance](double) { return tolerance; }, 200)
-            .x;
+    const double tolerance = 1e-12 * residual_start + rounding;
+    // r = g − Δκ falls from r(0) > 0 and is concave where g saturates with softening.
+    // From the explicit estimate Δκ = g(0) secants extrapolate from below the root:
+    // close to it in one or two steps (the step changes the strength by η Δκ ≪ 1),
+    // and past it on a concave r, which brackets the root. Whatever is not bracketed
+    // after a few steps takes the residual strength's bound below.
+    double low = 0.0;  // the largest Δκ with r > 0
+    double residual_low = residual_start;
+    double high = residual_start;
+    double residual_high = residual(high);
+    for (int step = 0; residual_high > tolerance && step < 4; ++step) {
+      const double next = high - residual_high * (high - low) / (residual_high - residual_low);
+      if (!(next > high)) break;  // r not falling: no extrapolation
+      low = high;
+      residual_low = residual_high;
+      high = next;
+      residual_high = residual(high);
+    }
+    if (std::abs(residual_high) <= tolerance) {
+      accepted = high;
+    } else {
+      if (!(residual_high < 0.0)) {
+        // Upper end: the return with the residual strength. Softening makes g grow
+        // with Δκ, so g(∞) usually bounds the root; widen if dilatancy decay says otherwise.
+        if (residual_high > 0.0) {
+          low = high;
+          residual_low = residual_high;
+        }
+        high = std::max(low, plastic_strain(residual_strength(pk)));
+        residual_high = residual(high);
+        for (int widen = 0; residual_high > 0.0 && widen < 60; ++widen) {
+          high = std::max(2.0 * high, high + residual_high);
+          residual_high = residual(high);
+        }
+      }
+      accepted = illinois_root(
+                     residual, high, residual_high, low, residual_low, tolerance,
+                     [tolerance](double) { return tolerance; }, 200)
+                     .x;
+    }
   }
   state.plastic_deviatoric_strain += accepted;
   // `returned` and `region` are those of the last evaluation, at the accepted Δκ.

@@ -8,11 +8,14 @@
 /// plastic deviatoric strain of the exact (closed-form) Mohr-Coulomb return
 /// with the strength at κ_n + Δκ. The trial's principal frame is computed once;
 /// each evaluation of g is a return in principal space. The scalar equation is
-/// solved by the Illinois variant of regula falsi inside a bracket [0, Δκ_hi]
-/// (g(0) ≥ 0, and the residual strength bounds it from above), so it converges
-/// for any η and increment size. The strain rate and the mean pressure for
-/// Bolton's ψ_p are taken explicitly: the rate of the current increment (after
-/// smoothing) and p' at the start of the increment.
+/// started at the explicit estimate Δκ = g(0) and solved by secants from there,
+/// which bracket the root in one or two steps when η Δκ ≪ 1; then (or, failing
+/// that, inside [0, Δκ_hi] with the residual strength's bound) by the Illinois
+/// variant of regula falsi, so it converges for any η and increment size. The
+/// elastic test first tries a bound without trigonometry (surely_elastic).
+/// The strain rate and the mean pressure for Bolton's ψ_p are taken explicitly:
+/// the rate of the current increment (after smoothing) and p' at the start of
+/// the increment.
 #include <array>
 #include <optional>
 #include <span>
