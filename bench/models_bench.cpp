@@ -126,11 +126,46 @@ void ssmc_with_rate_law(benchmark::State& bench) {
   bench.SetItemsProcessed(static_cast<int64_t>(bench.iterations() * kBatch));
 }
 
+/// The paper's section 5.5 sand as the FFP runs it (φ'_p = 60°, φ'_c = 32°, ψ_p = 5°,
+/// η = 8; no rate law, no Bolton). `mixed` = 0: every point shears plastically;
+/// 1: two points in three unload elastically, about the FFP run's share of elastic updates.
+void ssmc_paper_sand(benchmark::State& bench) {
+  std::mt19937_64 rng(5);
+  const bool mixed = bench.range(0) != 0;
+  const auto start = stresses(false, rng);
+  auto increments = shearing_increments(false, rng);
+  if (mixed)
+    for (std::size_t i = 0; i < kBatch; ++i)
+      if (i % 3 != 0) increments[i] *= -0.01;  // reversed and small: elastic unloading
+  StrainSofteningParameters p;
+  p.elastic = paper_mc().elastic;
+  p.friction_peak_rad = 60 * kDegree;
+  p.friction_residual_rad = 32 * kDegree;
+  p.dilatancy_peak_rad = 5 * kDegree;
+  p.softening_factor = 8;
+  const StrainSofteningMohrCoulomb law(p);
+  // A softened start (κ = 0.05) as in the soil around the penetrometer.
+  const std::vector<StrainSofteningMohrCoulomb::State> fresh(kBatch, {0.05, 0.0});
+  std::vector<StrainSofteningMohrCoulomb::State> state = fresh;
+  std::vector<Voigt> stress = start;
+  for (auto _ : bench) {
+    bench.PauseTiming();
+    stress = start;
+    state = fresh;
+    bench.ResumeTiming();
+    law.update(stress, increments, state, 1e-5);
+    benchmark::DoNotOptimize(stress.data());
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(static_cast<int64_t>(bench.iterations() * kBatch));
+}
+
 }  // namespace
 
 BENCHMARK(elastic)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mc_plane_return)->Arg(0)->Arg(1)->ArgName("three_d")->Unit(benchmark::kMicrosecond);
 BENCHMARK(mc_apex_return)->Unit(benchmark::kMicrosecond);
 BENCHMARK(ssmc_with_rate_law)->Arg(0)->Arg(1)->ArgName("three_d")->Unit(benchmark::kMicrosecond);
+BENCHMARK(ssmc_paper_sand)->Arg(0)->Arg(1)->ArgName("mixed")->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

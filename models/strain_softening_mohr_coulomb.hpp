@@ -8,11 +8,14 @@
 /// plastic deviatoric strain of the exact (closed-form) Mohr-Coulomb return
 /// with the strength at κ_n + Δκ. The trial's principal frame is computed once;
 /// each evaluation of g is a return in principal space. The scalar equation is
-/// solved by the Illinois variant of regula falsi inside a bracket [0, Δκ_hi]
-/// (g(0) ≥ 0, and the residual strength bounds it from above), so it converges
-/// for any η and increment size. The strain rate and the mean pressure for
-/// Bolton's ψ_p are taken explicitly: the rate of the current increment (after
-/// smoothing) and p' at the start of the increment.
+/// started at the explicit estimate Δκ = g(0) and solved by secants from there,
+/// which bracket the root in one or two steps when η Δκ ≪ 1; then (or, failing
+/// that, inside [0, Δκ_hi] with the residual strength's bound) by the Illinois
+/// variant of regula falsi, so it converges for any η and increment size. The
+/// elastic test first tries a bound without trigonometry (surely_elastic).
+/// The strain rate and the mean pressure for Bolton's ψ_p are taken explicitly:
+/// the rate of the current increment (after smoothing) and p' at the start of
+/// the increment.
 #include <array>
 #include <optional>
 #include <span>
@@ -74,12 +77,27 @@ class StrainSofteningMohrCoulomb {
                                                           StateOutput::friction_angle, StateOutput::dilatancy_angle,
                                                           StateOutput::strain_rate};
 
+  double peak_friction_rad(const State& state) const;
+  double peak_dilatancy_rad(double mean_pressure_Pa) const;
   Peaks peaks(const State& state, double mean_pressure_Pa) const;
   MohrCoulombStrength strength(const Peaks& peaks, double decay) const;
+  /// strength(peaks, 0): the residual strength, without trigonometry unless
+  /// Bolton's ψ_p lies below ψ_r.
+  MohrCoulombStrength residual_strength(const Peaks& peaks) const;
+  /// True only where the trial is certainly inside the surface at the current
+  /// strength: the yield test with a lower bound on sin φ' that needs no trigonometry.
+  bool surely_elastic(const Eigen::Vector3d& trial, double peak_friction_rad, double plastic_deviatoric_strain) const;
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;
   ElasticStiffness elastic_stiffness_;  ///< λ, 2G for the trial stress
+  double deviatoric_compliance_;        ///< √(2/3)/2G: plastic deviatoric strain per unit |dev Δσ|
+  MohrCoulombStrength residual_;        ///< strength at ε_d^p → ∞ where ψ_p ≥ ψ_r
+  // The elastic screen (surely_elastic): valid where these bounds hold.
+  bool screen_ = false;
+  double screen_peak_max_rad_ = 0.0;  ///< the largest φ'_p the rate law can give
+  double sin_residual_ = 0.0;         ///< sin φ'_r
+  double sin_chord_slope_ = 0.0;      ///< (sin φ'_max − sin φ'_r)/(φ'_max − φ'_r)
 };
 
 }  // namespace ffp

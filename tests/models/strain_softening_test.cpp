@@ -208,6 +208,48 @@ TEST_CASE("SSMC hardening is implicit: Δκ is the plastic deviatoric strain of 
   }
 }
 
+TEST_CASE("SSMC's elastic screen never hides yielding: trials 1e-9 either side of the surface", "[ssmc]") {
+  // The update skips the exact yield test where a bound on sin φ' says "inside";
+  // at every κ, rate and cohesion a trial just outside must still yield and one
+  // just inside must stay elastic. Principal stresses σ1 ≥ σ2 ≥ σ3 on the
+  // surface: σ1 (1 + sin φ') = σ3 (1 − sin φ') + 2c' cos φ'.
+  StrainSofteningParameters p = paper_sand();
+  p.friction_peak_rad = 60 * kDegree;
+  for (int variant = 0; variant < 3; ++variant) {
+    if (variant == 1) {
+      p.rate.alpha_phi = 0.1;
+      p.rate.reference_strain_rate_per_s = 1.0;
+    }
+    if (variant == 2) {
+      p.cohesion_peak_Pa = 2e3;
+      p.cohesion_residual_Pa = 0.5e3;
+    }
+    const StrainSofteningMohrCoulomb law(p);
+    for (double kappa : {0.0, 1e-6, 1e-3, 0.02, 0.1, 0.3, 0.5, 2.0}) {
+      for (double rate : {0.0, 10.0, 1e4}) {
+        StrainSofteningMohrCoulomb::State state{kappa, rate};
+        const MohrCoulombParameters s = law.current_strength(state, 3e3);
+        const double sin_phi = std::sin(s.friction_angle_rad);
+        const double minor = -3e3;
+        const double major =
+            (minor * (1.0 - sin_phi) + 2.0 * s.cohesion_Pa * std::cos(s.friction_angle_rad)) / (1.0 + sin_phi);
+        for (double side : {1.0, -1.0}) {
+          CAPTURE(variant, kappa, rate, side);
+          Voigt stress = Voigt::Zero();
+          stress << major + side * 1e-9 * std::abs(minor), 0.5 * (major + minor), minor, 0, 0, 0;
+          StrainSofteningMohrCoulomb::State point = state;
+          const ReturnRegion region = law.update(stress, Voigt::Zero(), point, 0.0);
+          if (side > 0.0) {
+            CHECK(region != ReturnRegion::elastic);
+          } else {
+            CHECK(region == ReturnRegion::elastic);
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("a faster strain rate raises SSMC strength only above ε̇_ref", "[ssmc][rate]") {
   StrainSofteningParameters p = paper_sand();
   p.rate.alpha_phi = 0.1;
