@@ -95,6 +95,24 @@ void mc_apex_return(benchmark::State& bench) {
   run(bench, start, [&](std::vector<Voigt>& s) { law.update(s, increments); });
 }
 
+/// As run(), with the SSMC state reset to `fresh` as well before each batch.
+void run_ssmc(benchmark::State& bench, const StrainSofteningMohrCoulomb& law, const std::vector<Voigt>& start,
+              const std::vector<Voigt>& increments, const std::vector<StrainSofteningMohrCoulomb::State>& fresh,
+              double dt_s) {
+  std::vector<StrainSofteningMohrCoulomb::State> state = fresh;
+  std::vector<Voigt> stress = start;
+  for (auto _ : bench) {
+    bench.PauseTiming();
+    stress = start;
+    state = fresh;
+    bench.ResumeTiming();
+    law.update(stress, increments, state, dt_s);
+    benchmark::DoNotOptimize(stress.data());
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(static_cast<int64_t>(bench.iterations() * kBatch));
+}
+
 void ssmc_with_rate_law(benchmark::State& bench) {
   std::mt19937_64 rng(4);
   const bool three_d = bench.range(0) != 0;
@@ -111,19 +129,8 @@ void ssmc_with_rate_law(benchmark::State& bench) {
   p.rate.reference_strain_rate_per_s = 1.0;
   p.rate.smoothing_increments = 10;
   const StrainSofteningMohrCoulomb law(p);
-  const std::vector<StrainSofteningMohrCoulomb::State> fresh(kBatch);
-  std::vector<StrainSofteningMohrCoulomb::State> state = fresh;
-  std::vector<Voigt> stress = start;
-  for (auto _ : bench) {
-    bench.PauseTiming();
-    stress = start;
-    state = fresh;
-    bench.ResumeTiming();
-    law.update(stress, increments, state, 1e-4);  // ε̇ ≈ 100/s: the rate law is active
-    benchmark::DoNotOptimize(stress.data());
-    benchmark::ClobberMemory();
-  }
-  bench.SetItemsProcessed(static_cast<int64_t>(bench.iterations() * kBatch));
+  run_ssmc(bench, law, start, increments, std::vector<StrainSofteningMohrCoulomb::State>(kBatch),
+           1e-4);  // ε̇ ≈ 100/s: the rate law is active
 }
 
 /// The paper's section 5.5 sand as the FFP runs it (φ'_p = 60°, φ'_c = 32°, ψ_p = 5°,
@@ -145,19 +152,7 @@ void ssmc_paper_sand(benchmark::State& bench) {
   p.softening_factor = 8;
   const StrainSofteningMohrCoulomb law(p);
   // A softened start (κ = 0.05) as in the soil around the penetrometer.
-  const std::vector<StrainSofteningMohrCoulomb::State> fresh(kBatch, {0.05, 0.0});
-  std::vector<StrainSofteningMohrCoulomb::State> state = fresh;
-  std::vector<Voigt> stress = start;
-  for (auto _ : bench) {
-    bench.PauseTiming();
-    stress = start;
-    state = fresh;
-    bench.ResumeTiming();
-    law.update(stress, increments, state, 1e-5);
-    benchmark::DoNotOptimize(stress.data());
-    benchmark::ClobberMemory();
-  }
-  bench.SetItemsProcessed(static_cast<int64_t>(bench.iterations() * kBatch));
+  run_ssmc(bench, law, start, increments, std::vector<StrainSofteningMohrCoulomb::State>(kBatch, {0.05, 0.0}), 1e-5);
 }
 
 }  // namespace
