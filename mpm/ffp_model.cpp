@@ -162,6 +162,8 @@ FfpRun::FfpRun(const FfpDescription& d)
   if (d.deformable) {
     if (d.prescribed) throw std::invalid_argument("a prescribed (CPT) penetrometer is rigid");
     if (d.project_particles) throw std::invalid_argument("the particle projection is for a rigid penetrometer");
+    if (d.surface != ContactSurface::nodes)
+      throw std::invalid_argument("the particles' contact surface is for a rigid penetrometer");
     // Own nodal field for the penetrometer (two-body contact), and the exact mass.
     s.grid.fields.resize(2);
     s.grid.fields[1].resize(s.grid.nodes());
@@ -201,6 +203,7 @@ FfpRun::FfpRun(const FfpDescription& d)
     settings.force = d.force;
     settings.external_force_N = d.external_force_N;
     settings.contact = d.contact;
+    settings.surface = d.surface;
     settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
     settings.project_particles = d.project_particles;
     rigid_ = std::make_unique<RigidPenetrometer>(settings);

@@ -110,6 +110,7 @@ struct FfpDescription {
   RigidBodyForce force = RigidBodyForce::contact_impulse;
   double external_force_N = 0.0;  ///< on a free rigid body, + up
   ContactLaw contact;
+  ContactSurface surface = ContactSurface::nodes;  ///< rigid only
   double detection_cells = 0.0;  ///< nodes within this many min cells outside the outline are penetrometer nodes
   /// Rigid only: soil particles inside the outline after a step are put back onto it
   /// (RigidPenetrometerSettings::project_particles).

@@ -21,6 +21,9 @@ struct PenetrometerState {
   double cone_normal_impulse_N_s = 0.0;
   double shaft_impulse_N_s = 0.0;
   std::size_t contact_nodes = 0;  ///< nodes where the soil's velocity was corrected in the last step
+                                  ///< (contact.surface particles: particles pressed against the outline)
+  /// contact.surface particles: the last Gauss–Seidel sweep's largest velocity change (m/s).
+  double contact_residual_m_s = 0.0;
   /// Particle projection (rigid, contact.project_particles): soil particles put back onto the
   /// outline in the last step, and how deep the deepest of them was before that.
   std::size_t projected_particles = 0;

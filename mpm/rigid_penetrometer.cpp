@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "models/bracketed_root.hpp"
@@ -14,13 +16,19 @@ RigidPenetrometer::RigidPenetrometer(const RigidPenetrometerSettings& settings)
   if (settings.motion == RigidMotion::free && !(settings.mass_kg > 0.0))
     throw std::invalid_argument("a free rigid penetrometer needs a mass > 0");
   if (!(settings.detection_distance_m >= 0.0)) throw std::invalid_argument("detection distance must be ≥ 0");
+  if (settings.surface == ContactSurface::particles && settings.motion == RigidMotion::free &&
+      settings.force != RigidBodyForce::contact_impulse)
+    throw std::invalid_argument("the particles' contact surface exchanges impulses: it needs contact_impulse");
   state_.velocity_m_s = settings.velocity_m_s;
 }
 
 void RigidPenetrometer::attach(Simulation& s) {
   // After the fixities, so that the contact law sees v_r = 0 on the axis (and keeps it).
   s.stages.insert_before("update_particles", {"apply_rigid_contact", [this](Simulation& sim) { apply_contact(sim); }});
-  if (s.settings.transfer == Transfer::musl)  // the classic MUSL strains from a remapped field: correct it too
+  // The classic MUSL strains from a remapped field: correct it too (with the particles' surface also
+  // musl_remapped, which moves particles with it).
+  if (s.settings.transfer == Transfer::musl ||
+      (settings_.surface == ContactSurface::particles && s.settings.transfer == Transfer::musl_remapped))
     s.stages.insert_before("compute_strain_increments",
                            {"apply_rigid_contact_remapped", [this](Simulation& sim) { apply_contact_remapped(sim); }});
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
@@ -122,7 +130,39 @@ double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) {
   return illinois_root(residual, hi, f_hi, lo, f_lo, 0.0, width, 200).x;
 }
 
+void RigidPenetrometer::apply_particle_contact(Simulation& s) {
+  // Candidates within a cell of the outline: a particle closes at most its gap per step, and no
+  // particle moves a cell in one step (CFL).
+  particle_contact_.collect(s, geometry_, tip_z_, settings_.soil_field, s.grid.min_spacing());
+  NodalField& f = s.grid.fields[settings_.soil_field];
+  const double dt = s.dt_s;
+  const double M = settings_.mass_kg;
+  double v_start = settings_.velocity_m_s, inverse_mass = 0.0;
+  if (settings_.motion == RigidMotion::free) {
+    const double g = s.gravity_m_s2.value_or(0.0);
+    v_start = state_.velocity_m_s + dt * (-g + settings_.external_force_N / M);
+    inverse_mass = kTwoPi / M;
+  }
+  ParticleContactOutcome out =
+      particle_contact_.solve(s, settings_.soil_field, f.velocity_new_r.data(), f.velocity_new_z.data(), v_start,
+                              inverse_mass, settings_.contact, true);
+  const double reaction = -kTwoPi * out.impulse_z / dt;
+  // The body takes exactly the soil's impulse (out.body_velocity equals this to round-off).
+  state_.velocity_m_s = settings_.motion == RigidMotion::free ? v_start + dt * reaction / M : v_start;
+  state_.reaction_N = reaction;
+  state_.impulse_N_s += reaction * dt;
+  state_.contact_nodes = out.active;
+  state_.contact_residual_m_s = out.residual_m_s;
+  state_.cone_impulse_N_s -= kTwoPi * out.cone_z;
+  state_.cone_normal_impulse_N_s -= kTwoPi * out.cone_normal_z;
+  state_.shaft_impulse_N_s -= kTwoPi * out.shaft_z;
+}
+
 void RigidPenetrometer::apply_contact(Simulation& s) {
+  if (settings_.surface == ContactSurface::particles) {
+    apply_particle_contact(s);
+    return;
+  }
   find_nodes(s);
   const double dt = s.dt_s;
   const double g = s.gravity_m_s2.value_or(0.0);
@@ -157,6 +197,11 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
 
 void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
   NodalField& f = s.grid.fields[settings_.soil_field];
+  if (settings_.surface == ContactSurface::particles) {  // the same constraints, the body's velocity given
+    particle_contact_.solve(s, settings_.soil_field, f.velocity_r.data(), f.velocity_z.data(), state_.velocity_m_s, 0.0,
+                            settings_.contact, false);
+    return;
+  }
   const Vector2 body{0.0, state_.velocity_m_s};
   const double dt_over_h = s.dt_s / s.grid.min_spacing();
   for (const ContactNode& c : nodes_) {

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "mpm/contact_law.hpp"
+#include "mpm/particle_contact.hpp"
 #include "mpm/penetrometer_geometry.hpp"
 #include "mpm/penetrometer_state.hpp"
 #include "mpm/simulation.hpp"
@@ -64,6 +65,13 @@ inline std::string to_string(RigidBodyForce f) {
   return std::string(std::ranges::find(kRigidBodyForceNames, f, &RigidBodyForceName::first)->second);
 }
 
+/// Where the contact acts: at the nodes taken as the body's (contact_law.hpp), or on each
+/// soil particle's domain against the exact outline (particle_contact.hpp).
+enum class ContactSurface : std::uint8_t { nodes, particles };
+using ContactSurfaceName = std::pair<ContactSurface, std::string_view>;
+inline constexpr auto kContactSurfaceNames =
+    std::to_array<ContactSurfaceName>({{ContactSurface::nodes, "nodes"}, {ContactSurface::particles, "particles"}});
+
 struct RigidPenetrometerSettings {
   PenetrometerShape shape;
   double mass_kg = 0.0;       ///< whole body (unused for a prescribed motion)
@@ -73,6 +81,7 @@ struct RigidPenetrometerSettings {
   RigidBodyForce force = RigidBodyForce::contact_impulse;
   double external_force_N = 0.0;  ///< t_rb of eq. 1, vertical, + up
   ContactLaw contact;
+  ContactSurface surface = ContactSurface::nodes;
   /// Nodes with signed distance ≤ this are penetrometer nodes (0: inside or on the outline).
   double detection_distance_m = 0.0;
   std::uint8_t soil_field = 0;
@@ -115,6 +124,8 @@ class RigidPenetrometer {
 
  private:
   void find_nodes(const Simulation& simulation);
+  /// ContactSurface::particles: the step's exchange on the updated grid velocities.
+  void apply_particle_contact(Simulation& simulation);
   /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v)
   /// and adding the body's share of it (−2π × the soil's) to the state's cone/shaft impulses.
   double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected);
@@ -125,7 +136,8 @@ class RigidPenetrometer {
   double tip_z0_, tip_z_;
   PenetrometerState state_;
   std::vector<ContactNode> nodes_;
-  std::vector<Vector2> soil_star_;  ///< v*_s at the nodes, before contact
+  std::vector<Vector2> soil_star_;    ///< v*_s at the nodes, before contact
+  ParticleContact particle_contact_;  ///< ContactSurface::particles: this step's candidates
 };
 
 }  // namespace ffp::mpm

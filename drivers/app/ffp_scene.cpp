@@ -124,12 +124,24 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
     c.fail("delta_deg", "is required (the FFP–soil friction angle), or give rough: true");
   d.contact.rough = rough;
   if (!rough) d.contact.friction = std::tan(c.number("delta_deg", Range::half_open(0.0, 90.0, "degrees")) * kDegree);
-  // A cap on the correction's strain per step (the paper's code: 0.75), 0 for none.
-  d.contact.velocity_scaling =
-      c.number("velocity_scaling", Range::closed(0.0, 10.0, "(strain per step; 0: no cap)"), 0.75);
-  // Nodes up to half a cell outside the outline take part: the contact surface is then centred on the
-  // outline at every h (with 0, only nodes inside: the cone is 0.38 h thinner and soil intrudes 0.75 h).
-  d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.5);
+  // Where the contact acts: the nodes within detection_cells of the outline, or each sand particle's
+  // domain against the exact outline (mpm/particle_contact.hpp).
+  d.surface = c.choice("surface", mpm::kContactSurfaceNames, mpm::ContactSurface::nodes);
+  if (d.surface == mpm::ContactSurface::particles) {
+    if (d.deformable) c.fail("surface", "particles applies to a rigid penetrometer only (this one is deformable)");
+    if (d.force != mpm::RigidBodyForce::contact_impulse)
+      c.fail("surface", "particles exchanges impulses: it needs rigid_body_force contact_impulse");
+    // The nodes' settings mean nothing to it: refused rather than silently ignored.
+    for (const char* key : {"velocity_scaling", "detection_cells"})
+      if (c.has(key)) c.fail(key, "applies to surface nodes only (this contact is on the particles)");
+  } else {
+    // A cap on the correction's strain per step (the paper's code: 0.75), 0 for none.
+    d.contact.velocity_scaling =
+        c.number("velocity_scaling", Range::closed(0.0, 10.0, "(strain per step; 0: no cap)"), 0.75);
+    // Nodes up to half a cell outside the outline take part: the contact surface is then centred on the
+    // outline at every h (with 0, only nodes inside: the cone is 0.38 h thinner and soil intrudes 0.75 h).
+    d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.5);
+  }
   // Soil particles that end up inside the rigid body's exact outline are put back onto it
   // (positions only), so that the grid contact's small per-step leak cannot accumulate: on by
   // default for a rigid body, chosen by the intrusion it removes (0.07–0.41 cells without it,
@@ -137,7 +149,7 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   d.project_particles = c.boolean("project_particles", !d.deformable);
   if (d.project_particles && d.deformable)
     c.fail("project_particles", "applies to a rigid penetrometer only (this one is deformable)");
-  c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells, project_particles)");
+  c.finish("contact (delta_deg or rough, velocity_scaling, detection_cells, surface, project_particles)");
 }
 
 void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {

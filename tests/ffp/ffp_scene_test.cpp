@@ -81,6 +81,30 @@ TEST_CASE("a deformable FFP with the particle projection is refused", "[ffp][sce
   refused(word, "contact.project_particles", "true or false");
 }
 
+TEST_CASE("the particles' contact surface refuses the nodes' settings, a deformable body and eq. 1's force",
+          "[ffp][scene]") {
+  json s = reference();
+  s["contact"]["surface"] = "particles";
+  s["contact"]["detection_cells"] = 0.5;
+  refused(s, "contact.detection_cells", "surface nodes only");
+  json cap = reference();
+  cap["contact"]["surface"] = "particles";
+  cap["contact"]["velocity_scaling"] = 0.75;
+  refused(cap, "contact.velocity_scaling", "surface nodes only");
+  json elastic = reference();
+  elastic["ffp"]["deformable"] = {{"E_kPa", 20000}, {"nu", 0.0}};
+  elastic["contact"]["project_particles"] = false;
+  elastic["contact"]["surface"] = "particles";
+  refused(elastic, "contact.surface", "rigid penetrometer only");
+  json force = reference();
+  force["ffp"]["rigid_body_force"] = "soil_internal_force";
+  force["contact"]["surface"] = "particles";
+  refused(force, "contact.surface", "contact_impulse");
+  json word = reference();
+  word["contact"]["surface"] = "outline";
+  refused(word, "contact.surface", "nodes");
+}
+
 TEST_CASE("damping is refused for the dynamic FFP impact", "[ffp][scene]") {
   json s = reference();
   s["solver"]["local_damping"] = 0.05;

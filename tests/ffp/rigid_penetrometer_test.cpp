@@ -42,6 +42,9 @@ TEST_CASE("a block sliding on a rigid floor with delta = 20° decelerates at mu 
   // huge, flat penetrometer whose top is z = 0. The block is a ring at r ≈ 100 m,
   // where its hoop strain over the whole slide (0.14 m / 100 m) costs a
   // deceleration of E·ε_θ/(ρ r) ~ 1e-2 m/s², 0.2 % of μg.
+  // Both contact surfaces: the nodes under the block, or each particle's domain against the floor.
+  const ContactSurface surface = GENERATE(ContactSurface::nodes, ContactSurface::particles);
+  INFO("contact surface " << (surface == ContactSurface::nodes ? "nodes" : "particles"));
   const double mu = std::tan(20.0 * kDegree), v0 = 1.0, rho = 2000.0, nu = 0.3;
   ModelDescription m;
   for (int i = 0; i <= 40; ++i) m.r_nodes_m.push_back(99.95 + 0.01 * i);
@@ -59,6 +62,7 @@ TEST_CASE("a block sliding on a rigid floor with delta = 20° decelerates at mu 
   floor.motion = RigidMotion::prescribed;
   floor.velocity_m_s = 0.0;
   floor.contact.friction = mu;
+  floor.surface = surface;
   RigidPenetrometer rigid(floor);
   rigid.attach(s);
 
@@ -115,6 +119,8 @@ TEST_CASE("the soil gains exactly the momentum the rigid FFP loses (contact impu
   // weight impulse.)
   FfpDescription d = coarse_ffp();
   d.gravity_m_s2 = 0.0;
+  d.surface = GENERATE(ContactSurface::nodes, ContactSurface::particles);
+  INFO("contact surface " << (d.surface == ContactSurface::nodes ? "nodes" : "particles"));
   FfpRun run(d);
   Simulation& s = run.simulation();
   const double M = d.mass_kg, v0 = -d.velocity_m_s;
@@ -163,4 +169,42 @@ TEST_CASE("the particle projection moves soil particles only: velocities and str
   CHECK(moved > 0);
   CHECK(unchanged);
   CHECK(worst_inside < 1e-9 * d.mesh.min_cell_m);
+}
+
+TEST_CASE("with the particles' contact surface no sand particle's domain crosses the cone's exact outline",
+          "[ffp][rigid][particle_contact]") {
+  // The constraint lets a particle close its gap to the outline within a step but not more, and
+  // that holds exactly for a flat face; on the cone's flank (a straight line in the r–z plane)
+  // too. Only the apex and the 5 mm rounded edge, where the closest point's normal turns during
+  // the step, can leave a second-order overlap of about (Δt u_t)²/(2 × 5 mm) ≪ h. So: the deepest
+  // overlap of any domain stays below 1 % of h, no particle centre ever enters the body (the
+  // projection never acts), and the body loses exactly the impulse the soil gains.
+  FfpDescription d = coarse_ffp();
+  d.surface = ContactSurface::particles;
+  d.project_particles = true;
+  FfpRun run(d);
+  Simulation& s = run.simulation();
+  const PenetrometerGeometry outline(d.shape);
+  const double M = d.mass_kg, v0 = -d.velocity_m_s;
+  double deepest_overlap = 0.0;
+  std::size_t projected = 0;
+  while (s.time_s < 0.04) {
+    run.advance();
+    projected += run.state().projected_particles;
+    const Particles& P = s.particles;
+    const Body& soil = s.bodies[run.soil_body()];
+    for (std::size_t p = soil.begin; p < soil.end; ++p) {
+      const SurfaceQuery q = outline.query(P.r[p], P.z[p], run.tip_z_m());
+      const double gap =
+          q.signed_distance_m - (P.half_r[p] * std::abs(q.normal_r) + P.half_z[p] * std::abs(q.normal_z));
+      deepest_overlap = std::max(deepest_overlap, -gap);
+    }
+  }
+  INFO("deepest overlap " << deepest_overlap << " m, penetration " << run.penetration_m() << " m");
+  REQUIRE(run.penetration_m() > 0.1);  // the cone is well in
+  CHECK(deepest_overlap < 0.01 * d.mesh.min_cell_m);
+  CHECK(projected == 0);
+  // M Δv = ∫R dt − M g t (down positive), to round-off.
+  CHECK(M * (v0 - run.velocity_down_m_s()) + M * d.gravity_m_s2 * s.time_s ==
+        Approx(run.state().impulse_N_s).epsilon(1e-10));
 }
