@@ -69,10 +69,23 @@ std::string describe_foreign(const std::vector<std::string>& foreign) {
   return text;
 }
 
-/// "<label>-<16 hex>" (a run folder of the run cache) or ".<label>.log".
+/// The process id of `name` if it is "<base>.tmp-<pid>" (write_file_atomically's temporary), else 0.
+long temporary_owner(const std::string& name, const std::string& base) {
+  const std::string prefix = base + ".tmp-";
+  if (!name.starts_with(prefix) || name.size() == prefix.size() || name.size() > prefix.size() + 9) return 0;
+  const std::string digits = name.substr(prefix.size());
+  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    return 0;
+  return std::stol(digits);
+}
+
+/// "<label>-<16 hex>" (a run folder of the run cache), ".<label>.log", or the folder's own manifest
+/// being written (".ffp-output.json.tmp-<pid>": an ffp killed in that instant leaves it behind).
 bool looks_like_cache_entry(const fs::directory_entry& entry) {
   const std::string name = entry.path().filename().string();
-  if (entry.is_regular_file()) return name.size() > 5 && name.front() == '.' && name.ends_with(".log");
+  if (entry.is_regular_file())
+    return (name.size() > 5 && name.front() == '.' && name.ends_with(".log")) ||
+           temporary_owner(name, kOutputManifest) > 0;
   if (!entry.is_directory()) return false;
   if (name.front() == '.') return name.find(".tmp-") != std::string::npos || name.find(".old-") != std::string::npos;
   if (name.size() < 18 || name[name.size() - 17] != '-') return false;
@@ -135,6 +148,13 @@ void claim_persistent_folder(const fs::path& folder, const std::string& option, 
   if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
     throw OutputFolderRefused(option + ": '" + folder.string() + "' is a file, not a folder: choose another name");
   if (fs::exists(folder / kOutputManifest, ec)) return;
+  // A manifest temporary whose writer is dead (killed between writing and renaming it) is ffp's own
+  // leftover: removed, so that it neither stays nor makes the folder look foreign.
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const long owner = temporary_owner(entry.path().filename().string(), kOutputManifest);
+    std::error_code ignored;
+    if (owner > 0 && !process_alive(owner)) fs::remove(entry.path(), ignored);
+  }
   bool ours = true;
   std::vector<std::string> foreign;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
