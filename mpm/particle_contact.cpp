@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mpm/boundary_conditions.hpp"
+
 namespace ffp::mpm {
 
 void ParticleContact::collect(const Simulation& s, const PenetrometerGeometry& geometry, double tip_z_m,
@@ -24,18 +26,25 @@ void ParticleContact::collect(const Simulation& s, const PenetrometerGeometry& g
   }
 }
 
-ParticleContactOutcome ParticleContact::solve(Simulation& s, std::uint8_t soil_field, double* vr, double* vz,
+ParticleContactOutcome ParticleContact::solve(const Simulation& s, std::uint8_t soil_field, double* vr, double* vz,
                                               double body_velocity, double body_inverse_mass, const ContactLaw& law,
                                               bool warm_start) {
   const NodalField& f = s.grid.fields[soil_field];
   const int S = s.settings.shape_function == ShapeFunction::linear ? 2 : 3;
   const double dt = s.dt_s;
-  // Each candidate's support: its nodes, S_ip and S_ip/m_i, and Σ S_ip²/m_i (its inverse mass at the nodes).
+  // The grid's fixities hold through the contact (v_r = 0 on the axis under the apex, the chamber's
+  // walls): a constrained component takes no impulse and adds no inverse mass.
+  if (fixed_.size() != f.size()) {
+    fixed_.assign(f.size(), 0);
+    for (const NodeConstraint& c : s.grid.constraints) fixed_[c.node] |= c.bits;
+  }
+  // Each candidate's support: its nodes, S_ip and S_ip/m_i per free component, and Σ S_ip²/m_i over the
+  // nodes free in r and in z (its inverse mass in each direction).
   struct Support {
     std::size_t node[9];
-    double weight[9], weight_over_mass[9];
+    double weight[9], weight_over_mass_r[9], weight_over_mass_z[9];
     int count = 0;
-    double inverse_mass = 0.0;
+    double inverse_mass_r = 0.0, inverse_mass_z = 0.0;
   };
   std::vector<Support> supports(candidates_.size());
   for (std::size_t c = 0; c < candidates_.size(); ++c) {
@@ -46,10 +55,13 @@ ParticleContactOutcome ParticleContact::solve(Simulation& s, std::uint8_t soil_f
         const std::size_t i = s.grid.node(w.node_r + a, w.node_z + b);
         const double N = w.wr[a] * w.wz[b];
         if (!(N > 0.0) || !(f.mass[i] > s.mass_floor_kg)) continue;
+        const double free_r = (fixed_[i] & constrain_r) ? 0.0 : 1.0, free_z = (fixed_[i] & constrain_z) ? 0.0 : 1.0;
         support.node[support.count] = i;
         support.weight[support.count] = N;
-        support.weight_over_mass[support.count] = N / f.mass[i];
-        support.inverse_mass += N * N / f.mass[i];
+        support.weight_over_mass_r[support.count] = free_r * N / f.mass[i];
+        support.weight_over_mass_z[support.count] = free_z * N / f.mass[i];
+        support.inverse_mass_r += free_r * N * N / f.mass[i];
+        support.inverse_mass_z += free_z * N * N / f.mass[i];
         ++support.count;
       }
   }
@@ -59,8 +71,8 @@ ParticleContactOutcome ParticleContact::solve(Simulation& s, std::uint8_t soil_f
   // Apply the impulse (jr, jz) of candidate c: to its nodes, and its reaction to the body.
   auto apply = [&](const Support& support, double jr, double jz) {
     for (int k = 0; k < support.count; ++k) {
-      vr[support.node[k]] += support.weight_over_mass[k] * jr;
-      vz[support.node[k]] += support.weight_over_mass[k] * jz;
+      vr[support.node[k]] += support.weight_over_mass_r[k] * jr;
+      vz[support.node[k]] += support.weight_over_mass_z[k] * jz;
     }
     v_body -= body_inverse_mass * jz;
   };
@@ -100,19 +112,22 @@ ParticleContactOutcome ParticleContact::solve(Simulation& s, std::uint8_t soil_f
     }
     // Normal: close at most the gap in this step (none deeper once overlapping).
     const double floor_n = cand.gap_m >= 0.0 ? -cand.gap_m / dt : 0.0;
-    const double w_n = support.inverse_mass + cand.nz * cand.nz * body_inverse_mass;
+    const double w_n =
+        support.inverse_mass_r * cand.nr * cand.nr + (support.inverse_mass_z + body_inverse_mass) * cand.nz * cand.nz;
+    if (!(w_n > 0.0)) return 0.0;  // every node it could push along n is fixed
     const double un = ur * cand.nr + uz * cand.nz;
     const double jn = std::max(0.0, normal_impulse[c] + (floor_n - un) / w_n);
     const double djn = jn - normal_impulse[c];
     normal_impulse[c] = jn;
     if (djn != 0.0) {
       apply(support, djn * cand.nr, djn * cand.nz);
-      ur += support.inverse_mass * djn * cand.nr;
-      uz += (support.inverse_mass + body_inverse_mass) * djn * cand.nz;
+      ur += support.inverse_mass_r * djn * cand.nr;
+      uz += (support.inverse_mass_z + body_inverse_mass) * djn * cand.nz;
     }
     // Tangent t = (−n_z, n_r): Coulomb friction, |J_t| ≤ μ J_n (rough: any, while in contact).
     const double tr = -cand.nz, tz = cand.nr;
-    const double w_t = support.inverse_mass + tz * tz * body_inverse_mass;
+    const double w_t = support.inverse_mass_r * tr * tr + (support.inverse_mass_z + body_inverse_mass) * tz * tz;
+    if (!(w_t > 0.0)) return std::abs(djn) * w_n;
     const double ut = ur * tr + uz * tz;
     const double limit = law.rough ? (jn > 0.0 ? std::numeric_limits<double>::infinity() : 0.0) : law.friction * jn;
     const double jt = std::clamp(tangent_impulse[c] - ut / w_t, -limit, limit);

@@ -19,7 +19,8 @@
 /// Particles share nodes, so the constraints are coupled; they are solved by
 /// projected Gauss–Seidel over the particles in index order (deterministic),
 /// accumulating each particle's impulses, until no impulse changes the velocity
-/// of its particle by more than the tolerance (or 200 sweeps, see the .cpp).
+/// of its particle by more than the tolerance (or 200 sweeps, see the .cpp). The grid's fixities
+/// hold: a constrained nodal component takes no impulse (v_r = 0 on the axis under the apex).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -54,8 +55,8 @@ class ParticleContact {
   /// the ratio of the steps), and keep this solve's for the next one. Contact impulses change
   /// little from step to step, so most of the sweeps are saved; the answer is the same to the
   /// tolerance.
-  ParticleContactOutcome solve(Simulation& s, std::uint8_t soil_field, double* vr, double* vz, double body_velocity,
-                               double body_inverse_mass, const ContactLaw& law, bool warm_start);
+  ParticleContactOutcome solve(const Simulation& s, std::uint8_t soil_field, double* vr, double* vz,
+                               double body_velocity, double body_inverse_mass, const ContactLaw& law, bool warm_start);
   std::size_t candidates() const { return candidates_.size(); }
 
  private:
@@ -67,6 +68,7 @@ class ParticleContact {
   std::vector<Candidate> candidates_;
   /// Last warm-started solve's impulses per particle (normal, tangent) and its step.
   std::vector<double> last_normal_, last_tangent_;
+  std::vector<std::uint8_t> fixed_;  ///< the grid's ConstraintBits per node
   double last_dt_s_ = 0.0;
 };
 
