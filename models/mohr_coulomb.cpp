@@ -1,8 +1,6 @@
 #include "models/mohr_coulomb.hpp"
 
-#include <algorithm>
 #include <cassert>
-#include <cmath>
 
 #include "models/principal_stress.hpp"
 
@@ -28,35 +26,20 @@ ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) c
   return region;
 }
 
-// Most points of a batch stay elastic. For those with θθ principal (the
-// axisymmetric MPM: zero 23 and 13 shears) the trial and its yield value are
-// formed here in scalars, by the same operations in the same order as
-// ElasticStiffness::stress_increment, PrincipalStresses and
-// MohrCoulombStrength::yield (so the same bits), without the principal-space
-// object; a point that yields, or a general 3D one, takes update() above.
+// Most points of a batch stay elastic: their trial and yield value come from
+// ElasticTrial (the same bits as update() above) and the yield test decides; a point
+// that yields, or a general 3D one, takes update().
 void MohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const {
   assert(stress.size() == strain_increment.size());
-  const double lambda = elastic_stiffness_.lambda, two_shear = elastic_stiffness_.two_shear;
+  const ElasticStiffness stiffness = elastic_stiffness_;  // copies: the stores below cannot change them
+  const MohrCoulombStrength strength = strength_;
   for (std::size_t i = 0; i < stress.size(); ++i) {
-    Voigt& sig = stress[i];
-    const Voigt& de = strain_increment[i];
-    const double lambda_tr = lambda * (de[0] + de[1] + de[2]);
-    const double t0 = sig[0] + (two_shear * de[0] + lambda_tr);
-    const double t1 = sig[1] + (two_shear * de[1] + lambda_tr);
-    const double t2 = sig[2] + (two_shear * de[2] + lambda_tr);
-    const double t3 = sig[3] + two_shear * de[3];
-    const double t4 = sig[4] + two_shear * de[4];
-    const double t5 = sig[5] + two_shear * de[5];
-    if (t4 == 0.0 && t5 == 0.0) {
-      const double centre = 0.5 * (t0 + t1), half_difference = 0.5 * (t0 - t1);
-      const double radius = std::sqrt(half_difference * half_difference + t3 * t3);
-      const double major = std::max(centre + radius, t2), minor = std::min(centre - radius, t2);
-      if (!(strength_.yield(major, minor) > 0.0)) {
-        sig << t0, t1, t2, t3, t4, t5;
-        continue;
-      }
+    const ElasticTrial trial(stress[i], strain_increment[i], stiffness);
+    if (trial.planar && !(strength.yield(trial.major, trial.minor) > 0.0)) {
+      trial.store(stress[i]);
+    } else {
+      update(stress[i], strain_increment[i]);
     }
-    update(sig, de);
   }
 }
 
