@@ -41,10 +41,11 @@ struct ElasticTrial {
     rt = stress[5] + d.two_shear * de[5];
     planar = zt == 0.0 && rt == 0.0;
     if (planar) {
-      const double centre = 0.5 * (rr + zz), half_difference = 0.5 * (rr - zz);
-      const double radius = std::sqrt(half_difference * half_difference + rz * rz);
-      major = std::max(centre + radius, tt);  // PrincipalStresses' order: θθ above, between or below
-      minor = std::min(centre - radius, tt);
+      centre_ = 0.5 * (rr + zz);
+      half_difference_ = 0.5 * (rr - zz);
+      radius_ = std::sqrt(half_difference_ * half_difference_ + rz * rz);
+      major = std::max(centre_ + radius_, tt);  // PrincipalStresses' order: θθ above, between or below
+      minor = std::min(centre_ - radius_, tt);
     }
   }
   void store(Voigt& out) const {
@@ -55,6 +56,37 @@ struct ElasticTrial {
     out[4] = zt;
     out[5] = rt;
   }
+
+  /// Planar only: σ_1 ≥ σ_2 ≥ σ_3, as PrincipalStresses::values().
+  Eigen::Vector3d values() const {
+    const double in_major = centre_ + radius_, in_minor = centre_ - radius_;
+    if (tt >= in_major) return {tt, in_major, in_minor};
+    if (tt >= in_minor) return {in_major, tt, in_minor};
+    return {in_major, in_minor, tt};
+  }
+  /// Planar only: the tensor with principal values v (values()' order) on the trial's
+  /// directions, as PrincipalStresses::with_values (Mohr's circle backwards).
+  void store_with_values(const Eigen::Vector3d& v, Voigt& out) const {
+    const double in_major = centre_ + radius_, in_minor = centre_ - radius_;
+    const int slot_tt = tt >= in_major ? 0 : (tt >= in_minor ? 1 : 2);
+    const int slot_major = slot_tt == 0 ? 1 : 0, slot_minor = slot_tt == 2 ? 1 : 2;
+    double cos_2theta = 1.0, sin_2theta = 0.0;
+    if (radius_ > 0.0) {
+      cos_2theta = half_difference_ / radius_;
+      sin_2theta = rz / radius_;
+    }
+    const double centre = 0.5 * (v[slot_major] + v[slot_minor]);
+    const double radius = 0.5 * (v[slot_major] - v[slot_minor]);
+    out[0] = centre + radius * cos_2theta;
+    out[1] = centre - radius * cos_2theta;
+    out[2] = v[slot_tt];
+    out[3] = radius * sin_2theta;
+    out[4] = 0.0;
+    out[5] = 0.0;
+  }
+
+ private:
+  double centre_ = 0.0, half_difference_ = 0.0, radius_ = 0.0;  ///< the trial's in-plane Mohr circle
 };
 
 class PrincipalStresses {
