@@ -9,11 +9,85 @@
 /// closed-form 3×3 solver. Coincident principal values are harmless: any basis
 /// of a repeated eigenspace rebuilds the same tensor as long as the new values
 /// keep them equal, which every Mohr-Coulomb return (plane, edge, apex) does.
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
+#include "models/elastic.hpp"
 #include "models/voigt.hpp"
 
 namespace ffp {
+
+/// The elastic trial σ + λ tr(Δε) I + 2G Δε and, where θθ is principal (zero 23 and 13
+/// shears: the axisymmetric MPM), its major and minor principal values σ_1, σ_3, in
+/// scalars by the same operations in the same order as ElasticStiffness::stress_increment
+/// and PrincipalStresses (so the same bits): the whole cost of a point that stays elastic,
+/// without the principal-space object (measured: that object, built for every point of an
+/// MPM step, took 60 % of the Mohr-Coulomb update's time).
+struct ElasticTrial {
+  double rr, zz, tt, rz, zt, rt;  ///< the trial in Voigt order
+  bool planar = false;
+  double major = 0.0, minor = 0.0;  ///< σ_1, σ_3 (planar only)
+
+  ElasticTrial(const Voigt& stress, const Voigt& strain_increment, const ElasticStiffness& d) {
+    const Voigt& de = strain_increment;
+    const double lambda_tr = d.lambda * (de[0] + de[1] + de[2]);
+    rr = stress[0] + (d.two_shear * de[0] + lambda_tr);
+    zz = stress[1] + (d.two_shear * de[1] + lambda_tr);
+    tt = stress[2] + (d.two_shear * de[2] + lambda_tr);
+    rz = stress[3] + d.two_shear * de[3];
+    zt = stress[4] + d.two_shear * de[4];
+    rt = stress[5] + d.two_shear * de[5];
+    planar = zt == 0.0 && rt == 0.0;
+    if (planar) {
+      centre_ = 0.5 * (rr + zz);
+      half_difference_ = 0.5 * (rr - zz);
+      radius_ = std::sqrt(half_difference_ * half_difference_ + rz * rz);
+      major = std::max(centre_ + radius_, tt);  // PrincipalStresses' order: θθ above, between or below
+      minor = std::min(centre_ - radius_, tt);
+    }
+  }
+  void store(Voigt& out) const {
+    out[0] = rr;
+    out[1] = zz;
+    out[2] = tt;
+    out[3] = rz;
+    out[4] = zt;
+    out[5] = rt;
+  }
+
+  /// Planar only: σ_1 ≥ σ_2 ≥ σ_3, as PrincipalStresses::values().
+  Eigen::Vector3d values() const {
+    const double in_major = centre_ + radius_, in_minor = centre_ - radius_;
+    if (tt >= in_major) return {tt, in_major, in_minor};
+    if (tt >= in_minor) return {in_major, tt, in_minor};
+    return {in_major, in_minor, tt};
+  }
+  /// Planar only: the tensor with principal values v (values()' order) on the trial's
+  /// directions, as PrincipalStresses::with_values (Mohr's circle backwards).
+  void store_with_values(const Eigen::Vector3d& v, Voigt& out) const {
+    const double in_major = centre_ + radius_, in_minor = centre_ - radius_;
+    const int slot_tt = tt >= in_major ? 0 : (tt >= in_minor ? 1 : 2);
+    const int slot_major = slot_tt == 0 ? 1 : 0, slot_minor = slot_tt == 2 ? 1 : 2;
+    double cos_2theta = 1.0, sin_2theta = 0.0;
+    if (radius_ > 0.0) {
+      cos_2theta = half_difference_ / radius_;
+      sin_2theta = rz / radius_;
+    }
+    const double centre = 0.5 * (v[slot_major] + v[slot_minor]);
+    const double radius = 0.5 * (v[slot_major] - v[slot_minor]);
+    out[0] = centre + radius * cos_2theta;
+    out[1] = centre - radius * cos_2theta;
+    out[2] = v[slot_tt];
+    out[3] = radius * sin_2theta;
+    out[4] = 0.0;
+    out[5] = 0.0;
+  }
+
+ private:
+  double centre_ = 0.0, half_difference_ = 0.0, radius_ = 0.0;  ///< the trial's in-plane Mohr circle
+};
 
 class PrincipalStresses {
  public:

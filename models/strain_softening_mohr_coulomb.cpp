@@ -63,12 +63,10 @@ MohrCoulombStrength StrainSofteningMohrCoulomb::residual_strength(const Peaks& p
   return peaks.dilatancy_rad >= parameters_.dilatancy_residual_rad ? residual_ : strength(peaks, 0.0);
 }
 
-bool StrainSofteningMohrCoulomb::surely_elastic(const Eigen::Vector3d& trial, double peak_friction_rad,
+bool StrainSofteningMohrCoulomb::surely_elastic(double major, double minor, double peak_friction_rad,
                                                 double plastic_deviatoric_strain) const {
   const double residual = parameters_.friction_residual_rad;
   if (!screen_ || !(peak_friction_rad >= residual && peak_friction_rad <= screen_peak_max_rad_)) return false;
-  const double major = trial[0];
-  const double minor = trial[2];
   const double sum = major + minor;
   if (!(sum < 0.0)) return false;  // f grows with sin φ' only under mean compression
   // exp(−x) ≥ (1 − x/4)⁴ on [0, 4] (and ≥ 0 beyond), so φ' ≥ φ'_r + (φ'_p − φ'_r)(1 − x/4)⁴
@@ -113,12 +111,19 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
   if (dt_s > 0.0)
     state.strain_rate_per_s =
         parameters_.rate.smoothed_rate(state.strain_rate_per_s, deviatoric_strain(strain_increment) / dt_s);
+  // Most points of an MPM step are well inside the surface: screened without exp or
+  // trigonometry, and (θθ principal) without the principal-space object (ElasticTrial).
+  const double peak_friction = peak_friction_rad(state);
+  if (const ElasticTrial quick(stress, strain_increment, elastic_stiffness_);
+      quick.planar && surely_elastic(quick.major, quick.minor, peak_friction, state.plastic_deviatoric_strain)) {
+    quick.store(stress);
+    return ReturnRegion::elastic;
+  }
   const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
   const Eigen::Vector3d& trial_values = principal.values();
-  // Most points of an MPM step are well inside the surface: screened without exp or trigonometry.
-  const double peak_friction = peak_friction_rad(state);
-  if (surely_elastic(trial_values, peak_friction, state.plastic_deviatoric_strain)) {
+  if (!principal.planar() &&
+      surely_elastic(trial_values[0], trial_values[2], peak_friction, state.plastic_deviatoric_strain)) {
     stress = trial;
     return ReturnRegion::elastic;
   }

@@ -86,7 +86,7 @@ class StrainSofteningMohrCoulomb {
   MohrCoulombStrength residual_strength(const Peaks& peaks) const;
   /// True only where the trial is certainly inside the surface at the current
   /// strength: the yield test with a lower bound on sin φ' that needs no trigonometry.
-  bool surely_elastic(const Eigen::Vector3d& trial, double peak_friction_rad, double plastic_deviatoric_strain) const;
+  bool surely_elastic(double major, double minor, double peak_friction_rad, double plastic_deviatoric_strain) const;
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;

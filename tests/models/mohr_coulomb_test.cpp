@@ -1,5 +1,6 @@
 #include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -259,4 +260,33 @@ TEST_CASE("P-wave speed comes from the constrained modulus", "[mc][elastic]") {
   const double nu = 0.33, E = 2.5e6;
   const double constrained = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
   CHECK(mc.p_wave_speed(1490.0) == Approx(std::sqrt(constrained / 1490.0)).epsilon(1e-14));
+}
+
+TEST_CASE("the batch update gives the single-point update's bits in every region, planar and 3D", "[mc][batch]") {
+  // The batch takes the elastic test and the return on ElasticTrial's scalar principal
+  // values where θθ is principal (the MPM): it must be the single-point update bit for bit.
+  std::mt19937_64 rng(4321);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const MohrCoulomb mc(sand(39.0, 5.0, 0.0));
+  const MohrCoulomb cohesive(sand(30.0, 10.0, 5e3));
+  std::array<long, 5> regions{};  // elastic, plane, compression edge, extension edge, apex
+  long different = 0;
+  for (int n = 0; n < 40000; ++n) {
+    const MohrCoulomb& law = n % 2 == 0 ? mc : cohesive;
+    std::vector<Voigt> stress(4), increment(4);
+    for (std::size_t k = 0; k < stress.size(); ++k) {
+      stress[k] = n % 5 == 0 ? random_voigt(rng, 1e5) : isotropic(-1e5 * uniform(rng)) + random_voigt(rng, 3e4);
+      increment[k] = random_voigt(rng, (n % 3 == 0 ? 1e-2 : 1e-4) * uniform(rng));
+      if (n % 7 != 0) stress[k][4] = stress[k][5] = increment[k][4] = increment[k][5] = 0.0;  // θθ principal
+    }
+    std::vector<Voigt> single = stress;
+    for (std::size_t k = 0; k < stress.size(); ++k)
+      ++regions[static_cast<std::size_t>(law.update(single[k], increment[k]))];
+    law.update(std::span<Voigt>(stress), std::span<const Voigt>(increment));
+    for (std::size_t k = 0; k < stress.size(); ++k)
+      for (int i = 0; i < 6; ++i)
+        if (!(stress[k][i] == single[k][i] && std::signbit(stress[k][i]) == std::signbit(single[k][i]))) ++different;
+  }
+  CHECK(different == 0);
+  for (const long count : regions) CHECK(count > 0);  // every region was exercised
 }
