@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "models/bracketed_root.hpp"
@@ -143,7 +141,7 @@ void RigidPenetrometer::apply_particle_contact(Simulation& s) {
     v_start = state_.velocity_m_s + dt * (-g + settings_.external_force_N / M);
     inverse_mass = kTwoPi / M;
   }
-  ParticleContactOutcome out =
+  const ParticleContactOutcome out =
       particle_contact_.solve(s, settings_.soil_field, f.velocity_new_r.data(), f.velocity_new_z.data(), v_start,
                               inverse_mass, settings_.contact, true);
   const double reaction = -kTwoPi * out.impulse_z / dt;

@@ -2,8 +2,9 @@
 /// The rigid penetrometer of the paper's section 4.1: no particles and no
 /// constitutive update, only its exact outline, its mass and one vertical
 /// velocity. It is coupled to the soil at the grid nodes it covers by the
-/// frictional contact law (mpm/contact_law.hpp), and it does not limit the
-/// time step.
+/// frictional contact law (mpm/contact_law.hpp), or (ContactSurface::particles)
+/// through each soil particle's domain against the exact outline
+/// (mpm/particle_contact.hpp), and it does not limit the time step.
 ///
 /// Rigid-body force (paper eqs. 1–3). Two variants:
 /// - contact_impulse (default): the impulse the soil receives at the contact
