@@ -19,6 +19,27 @@
 
 namespace ffp {
 
+/// Mohr's circle backwards: the planar tensor whose in-plane principal values are v[slot_major],
+/// v[slot_minor] on the directions of a circle with half-difference (σ_rr − σ_zz)/2, shear σ_rz
+/// and radius `radius` (cos 2θ, sin 2θ formed only here: an elastic point never needs them), and
+/// whose θθ is v[slot_tt]. Shared by ElasticTrial and PrincipalStresses (the same bits).
+inline void planar_with_values(const Eigen::Vector3d& v, int slot_tt, int slot_major, int slot_minor,
+                               double half_difference, double shear, double radius, Voigt& out) {
+  double cos_2theta = 1.0, sin_2theta = 0.0;
+  if (radius > 0.0) {
+    cos_2theta = half_difference / radius;
+    sin_2theta = shear / radius;
+  }
+  const double centre = 0.5 * (v[slot_major] + v[slot_minor]);
+  const double new_radius = 0.5 * (v[slot_major] - v[slot_minor]);
+  out[0] = centre + new_radius * cos_2theta;
+  out[1] = centre - new_radius * cos_2theta;
+  out[2] = v[slot_tt];
+  out[3] = new_radius * sin_2theta;
+  out[4] = 0.0;
+  out[5] = 0.0;
+}
+
 /// The elastic trial σ + λ tr(Δε) I + 2G Δε and, where θθ is principal (zero 23 and 13
 /// shears: the axisymmetric MPM), its major and minor principal values σ_1, σ_3, in
 /// scalars by the same operations in the same order as ElasticStiffness::stress_increment
@@ -70,19 +91,7 @@ struct ElasticTrial {
     const double in_major = centre_ + radius_, in_minor = centre_ - radius_;
     const int slot_tt = tt >= in_major ? 0 : (tt >= in_minor ? 1 : 2);
     const int slot_major = slot_tt == 0 ? 1 : 0, slot_minor = slot_tt == 2 ? 1 : 2;
-    double cos_2theta = 1.0, sin_2theta = 0.0;
-    if (radius_ > 0.0) {
-      cos_2theta = half_difference_ / radius_;
-      sin_2theta = rz / radius_;
-    }
-    const double centre = 0.5 * (v[slot_major] + v[slot_minor]);
-    const double radius = 0.5 * (v[slot_major] - v[slot_minor]);
-    out[0] = centre + radius * cos_2theta;
-    out[1] = centre - radius * cos_2theta;
-    out[2] = v[slot_tt];
-    out[3] = radius * sin_2theta;
-    out[4] = 0.0;
-    out[5] = 0.0;
+    planar_with_values(v, slot_tt, slot_major, slot_minor, half_difference_, rz, radius_, out);
   }
 
  private:
@@ -107,16 +116,8 @@ class PrincipalStresses {
   Voigt with_values(const Eigen::Vector3d& v) const {
     Voigt out;
     if (planar_) {
-      // Mohr's circle backwards: centre m, radius r, the same 2θ.
-      // cos 2θ, sin 2θ of the trial, formed only here: an elastic point never needs them.
-      double cos_2theta = 1.0, sin_2theta = 0.0;
-      if (radius_ > 0.0) {
-        cos_2theta = half_difference_ / radius_;
-        sin_2theta = shear_ / radius_;
-      }
-      const double centre = 0.5 * (v[slot_major_in_plane_] + v[slot_minor_in_plane_]);
-      const double radius = 0.5 * (v[slot_major_in_plane_] - v[slot_minor_in_plane_]);
-      out << centre + radius * cos_2theta, centre - radius * cos_2theta, v[slot_33_], radius * sin_2theta, 0.0, 0.0;
+      planar_with_values(v, slot_33_, slot_major_in_plane_, slot_minor_in_plane_, half_difference_, shear_, radius_,
+                         out);
       return out;
     }
     // σ_ij = Σ_k σ_k n_ik n_jk

@@ -80,6 +80,7 @@ ParticleContactOutcome ParticleContact::solve(const Simulation& s, std::uint8_t 
     if (last_normal_.size() != s.particles.size()) {
       last_normal_.assign(s.particles.size(), 0.0);
       last_tangent_.assign(s.particles.size(), 0.0);
+      last_particles_.clear();
     }
     const double scale = last_dt_s_ > 0.0 ? dt / last_dt_s_ : 0.0;
     for (std::size_t c = 0; c < candidates_.size(); ++c) {
@@ -159,11 +160,13 @@ ParticleContactOutcome ParticleContact::solve(const Simulation& s, std::uint8_t 
   }
   out.sweeps = std::min(out.sweeps, kMaxSweeps);
   if (warm_start) {
-    std::fill(last_normal_.begin(), last_normal_.end(), 0.0);
-    std::fill(last_tangent_.begin(), last_tangent_.end(), 0.0);
+    // Only the last solve's particles hold impulses: clear those, not every particle of the run.
+    for (const std::size_t p : last_particles_) last_normal_[p] = last_tangent_[p] = 0.0;
+    last_particles_.clear();
     for (std::size_t c = 0; c < candidates_.size(); ++c) {
       last_normal_[candidates_[c].particle] = normal_impulse[c];
       last_tangent_[candidates_[c].particle] = tangent_impulse[c];
+      last_particles_.push_back(candidates_[c].particle);
     }
     last_dt_s_ = dt;
   }

@@ -68,7 +68,8 @@ class ParticleContact {
   std::vector<Candidate> candidates_;
   /// Last warm-started solve's impulses per particle (normal, tangent) and its step.
   std::vector<double> last_normal_, last_tangent_;
-  std::vector<std::uint8_t> fixed_;  ///< the grid's ConstraintBits per node
+  std::vector<std::size_t> last_particles_;  ///< the particles whose last_* entries are set
+  std::vector<std::uint8_t> fixed_;          ///< the grid's ConstraintBits per node
   double last_dt_s_ = 0.0;
 };
 
