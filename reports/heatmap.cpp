@@ -13,19 +13,6 @@ namespace ffp {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    out += c;
-    if (c == '\'') out += '\'';
-  }
-  return out + "'";
-}
-
-}  // namespace
-
 bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
   if (!gnuplot_available()) {
     static std::once_flag warned;
@@ -54,9 +41,10 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
   }
   script << "EOD\n";
   script << "set termoption noenhanced\n";  // labels are plain text: '_' is not a subscript
-  script << "set title " << quoted(map.title) << "\n";
-  script << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n";
-  script << "set cblabel " << quoted(map.log_values ? "log10(" + map.value_label + ")" : map.value_label) << "\n";
+  script << "set title " << gnuplot_quoted(map.title) << "\n";
+  script << "set xlabel " << gnuplot_quoted(map.x_label) << "\nset ylabel " << gnuplot_quoted(map.y_label) << "\n";
+  script << "set cblabel " << gnuplot_quoted(map.log_values ? "log10(" + map.value_label + ")" : map.value_label)
+         << "\n";
   script << "set view map\nset pm3d map interpolate 0,0\nset palette rgbformulae 33,13,10\n";
   script << "set xrange [" << map.x.front() << ":" << map.x.back() << "]\n";
   script << "set yrange [" << map.y.front() << ":" << map.y.back() << "]\n";
@@ -76,7 +64,7 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
   return draw_with_gnuplot(png, [&](const fs::path& temporary_png) {
     std::ostringstream out;
     out << "set terminal pngcairo size " << map.width_px << "," << map.height_px << " font 'Sans,10'\n";
-    out << "set output " << quoted(temporary_png.string()) << "\nset encoding utf8\n"
+    out << "set output " << gnuplot_quoted(temporary_png.string()) << "\nset encoding utf8\n"
         << script.str() << "unset output\n";
     return out.str();
   });

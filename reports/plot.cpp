@@ -14,6 +14,15 @@ namespace ffp {
 
 namespace fs = std::filesystem;
 
+std::string gnuplot_quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    out += c;
+    if (c == '\'') out += '\'';
+  }
+  return out + "'";
+}
+
 bool gnuplot_available() {
   static const bool found = [] {
     const char* path = std::getenv("PATH");
@@ -30,19 +39,9 @@ bool gnuplot_available() {
 
 namespace {
 
-/// gnuplot strings in single quotes: only the quote itself needs doubling.
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    out += c;
-    if (c == '\'') out += '\'';
-  }
-  return out + "'";
-}
-
 void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int& block) {
-  script << "set title " << quoted(plot.title) << "\n";
-  script << "set xlabel " << quoted(plot.x_label) << "\nset ylabel " << quoted(plot.y_label) << "\n";
+  script << "set title " << gnuplot_quoted(plot.title) << "\n";
+  script << "set xlabel " << gnuplot_quoted(plot.x_label) << "\nset ylabel " << gnuplot_quoted(plot.y_label) << "\n";
   // Log axes in %g (1e-05, 0.001, 0.1): gnuplot's default prints 0.0000010.
   script << (plot.log_x ? "set logscale x\nset format x '%g'\n" : "unset logscale x\nset format x '% h'\n");
   script << (plot.log_y ? "set logscale y\nset format y '%g'\n" : "unset logscale y\nset format y '% h'\n");
@@ -54,7 +53,7 @@ void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int
     if (s.x.empty()) continue;
     if (!first) script << ", ";
     first = false;
-    script << "$data" << block << " using 1:2 with " << s.style << " title " << quoted(s.title);
+    script << "$data" << block << " using 1:2 with " << s.style << " title " << gnuplot_quoted(s.title);
     data << "$data" << block << " << EOD\n";
     char line[64];
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
@@ -73,11 +72,11 @@ void write_panel(std::ostream& script, const Plot& plot, std::ostream& data, int
 }
 
 void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream& data, int& block) {
-  script << "set title " << quoted(map.title) << "\n";
-  script << "set xlabel " << quoted(map.x_label) << "\nset ylabel " << quoted(map.y_label) << "\n";
+  script << "set title " << gnuplot_quoted(map.title) << "\n";
+  script << "set xlabel " << gnuplot_quoted(map.x_label) << "\nset ylabel " << gnuplot_quoted(map.y_label) << "\n";
   script << "unset logscale x\nunset logscale y\nset yrange [*:*] noreverse\n";
   script << (map.equal_axes ? "set size ratio -1\n" : "set size noratio\n");
-  script << "set cblabel " << quoted(map.colour_label) << "\n";
+  script << "set cblabel " << gnuplot_quoted(map.colour_label) << "\n";
   script << "set palette rgbformulae 33,13,10\n";
   if (map.colour_max > map.colour_min)
     script << "set cbrange [" << map.colour_min << ":" << map.colour_max << "]\n";
@@ -114,7 +113,7 @@ thread_local std::vector<PlotBatch::Item>* active_batch = nullptr;
 std::string figure_script(const std::string& body, const fs::path& output_png, int width, int height) {
   std::ostringstream script;
   script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
-  script << "set output " << quoted(output_png.string()) << "\n";
+  script << "set output " << gnuplot_quoted(output_png.string()) << "\n";
   // Plain text: '_' in scene names must not turn into subscripts.
   script << "set termoption noenhanced\nset grid\nset encoding utf8\n" << body << "unset output\n";
   return script.str();
@@ -122,7 +121,7 @@ std::string figure_script(const std::string& body, const fs::path& output_png, i
 
 /// Runs gnuplot on a script file (removed afterwards); its exit status is 0 and `log` empty on success.
 int run_gnuplot(const fs::path& script_file, std::string& log) {
-  const std::string command = "gnuplot " + quoted(script_file.string()) + " 2>&1";
+  const std::string command = "gnuplot " + gnuplot_quoted(script_file.string()) + " 2>&1";
   int status = -1;
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
     char buffer[256];

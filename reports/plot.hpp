@@ -61,6 +61,9 @@ bool write_png_row(const std::vector<ColourMap>& maps, const std::filesystem::pa
 /// True when a gnuplot executable is on PATH.
 bool gnuplot_available();
 
+/// A gnuplot string in single quotes: only the quote itself needs doubling.
+std::string gnuplot_quoted(const std::string& text);
+
 /// Draws one PNG with gnuplot from the script that `script_for(temporary_png)` writes
 /// (it must set the terminal and its output to temporary_png): the script goes to a
 /// file beside `png`, and the picture is renamed to `png` only when gnuplot succeeds.

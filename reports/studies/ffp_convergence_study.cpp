@@ -12,7 +12,7 @@ namespace ffp {
 
 namespace {
 
-const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
+const std::vector<double> kReferenceCells_m = {0.02, 0.01, 0.005, 0.0025};
 // The controls (pure FLIP; the tip half a cell off a node row) on the three coarser levels.
 constexpr std::size_t kControlLevels = 3;
 
@@ -39,13 +39,13 @@ double last(const CsvData& h, const std::string& column) {
 Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Mesh convergence of the reference run: error against run time";
-  for (double h : kMinCells_m) {
+  for (double h : kReferenceCells_m) {
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "min cell " + fixed(100 * h, 2) + " cm",
                                    {"mesh.min_cell_m=" + fixed(h, 4)}));
     study.runs.back().expected_wall_s = level_wall_s(h);
   }
   for (std::size_t l = 0; l < kControlLevels; ++l) {
-    const double h = kMinCells_m[l];
+    const double h = kReferenceCells_m[l];
     const std::string mesh = "mesh.min_cell_m=" + fixed(h, 4);
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "pure FLIP, " + fixed(100 * h, 2) + " cm",
                                    {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}));
@@ -63,7 +63,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         "converge monotonically with an order between 0.3 and 4, otherwise the finest mesh's value. The "
         "quantities are taken over fixed physical windows: the peak of the 2 ms running mean of the "
         "deceleration, the final penetration at 0.15 s and the soil's impulse on the FFP over 0–40 ms.");
-    const std::size_t n = kMinCells_m.size();
+    const std::size_t n = kReferenceCells_m.size();
     std::vector<double> peak(n), depth(n), wall(n), impulse(n);
     for (std::size_t i = 0; i < n; ++i) {
       peak[i] = figure(results, i, "peak_deceleration_2ms_g");
@@ -81,7 +81,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       const double e_peak = std::abs(peak[i] - peak_ref.value) / std::abs(peak_ref.value);
       const double e_depth = std::abs(depth[i] - depth_ref.value) / std::abs(depth_ref.value);
       const double e_impulse = std::abs(impulse[i] - impulse_ref.value) / std::abs(impulse_ref.value);
-      rows.push_back({fixed(100 * kMinCells_m[i], 2), fixed(figure(results, i, "particles"), 0),
+      rows.push_back({fixed(100 * kReferenceCells_m[i], 2), fixed(figure(results, i, "particles"), 0),
                       fixed(figure(results, i, "steps"), 0), fixed(wall[i], 1), fixed(peak[i], 2),
                       fixed(100 * e_peak, 1), fixed(100 * depth[i], 2), fixed(100 * e_depth, 1), fixed(impulse[i], 2),
                       fixed(100 * e_impulse, 1)});
@@ -107,12 +107,12 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       if (s.empty()) continue;
       const double dt0 = figure(results, i, "dt_s"), dt_min = figure(results, i, "dt_min_s");
       const bool collapsed = std::isfinite(dt0) && std::isfinite(dt_min) && dt_min < 0.01 * dt0;
-      health.push_back({fixed(100 * kMinCells_m[i], 2), fixed(1000 * figure(results, i, "max_soil_intrusion_m"), 2),
-                        fixed(figure(results, i, "max_soil_intrusion_cells"), 2),
-                        fixed(figure(results, i, "max_volume_ratio"), 2),
-                        fixed(figure(results, i, "inflated_particles_max"), 0), scientific(dt_min),
-                        scientific(last(results.history(i), "soil_kinetic_energy_J")),
-                        collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
+      health.push_back(
+          {fixed(100 * kReferenceCells_m[i], 2), fixed(1000 * figure(results, i, "max_soil_intrusion_m"), 2),
+           fixed(figure(results, i, "max_soil_intrusion_cells"), 2), fixed(figure(results, i, "max_volume_ratio"), 2),
+           fixed(figure(results, i, "inflated_particles_max"), 0), scientific(dt_min),
+           scientific(last(results.history(i), "soil_kinetic_energy_J")),
+           collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
     }
     md.table({"min cell [cm]", "max intrusion [mm]", "[cells]", "max V/V0", "particles at V/V0 ≥ 2", "Δt_min [s]",
               "soil kinetic energy at 0.15 s [J]", "level"},
@@ -125,7 +125,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       const double ke = last(results.history(l), "soil_kinetic_energy_J");
       const double ke_flip = last(results.history(flip), "soil_kinetic_energy_J");
       const double z_offset = figure(results, offset, "final_penetration_m");
-      controls.push_back({fixed(100 * kMinCells_m[l], 2), fixed(100 * depth[l], 2),
+      controls.push_back({fixed(100 * kReferenceCells_m[l], 2), fixed(100 * depth[l], 2),
                           fixed(100 * figure(results, flip, "final_penetration_m"), 2), scientific(ke),
                           scientific(ke_flip), fixed(100 * z_offset, 2),
                           fixed(100 * (z_offset - depth[l]) / depth[l], 1)});
@@ -153,7 +153,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       md.figure(out.figures_relative + "/convergence_error_vs_wall_time.png",
                 "Relative error of peak deceleration and final penetration against wall time, one point per mesh.");
     std::vector<LabelledRun> runs;
-    for (std::size_t i = 0; i < n; ++i) runs.push_back({i, "min cell " + fixed(100 * kMinCells_m[i], 2) + " cm"});
+    for (std::size_t i = 0; i < n; ++i) runs.push_back({i, "min cell " + fixed(100 * kReferenceCells_m[i], 2) + " cm"});
     ffp_depth_profiles_figure(results, runs, "Mesh convergence", "convergence_profiles.png", out);
   };
   return study;

@@ -12,7 +12,7 @@ namespace ffp {
 
 namespace {
 
-const std::vector<double> kMinCells_m = {0.02, 0.01, 0.005, 0.0025};
+const std::vector<double> kSofteningCells_m = {0.02, 0.01, 0.005, 0.0025};
 // The calibrations exist for these cells (calibration_dr15_mpm_*.json); a 0.25 cm specimen takes hours.
 const std::vector<std::pair<double, const char*>> kCalibrations = {{0.02, "calibration_dr15_mpm_2cm.json"},
                                                                    {0.01, "calibration_dr15_mpm_1cm.json"},
@@ -35,7 +35,7 @@ std::string cm(double h) { return fixed(100 * h, 2) + " cm"; }
 Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Mesh convergence of the softening run (SSMC φ'_p = 60°)";
-  for (double h : kMinCells_m) {
+  for (double h : kSofteningCells_m) {
     study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η = 8, " + cm(h), softening(h, kPaperEta)));
     study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
   }
@@ -59,7 +59,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
   };
   study.write = [](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
-    const std::size_t levels = kMinCells_m.size();
+    const std::size_t levels = kSofteningCells_m.size();
     std::vector<double> peak(levels), depth(levels);
     for (std::size_t i = 0; i < levels; ++i) {
       peak[i] = figure(results, i, "peak_deceleration_2ms_g");
@@ -84,7 +84,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     for (std::size_t i = 0; i < levels; ++i) {
       const bool has_scaled = i < 3;
       rows.push_back(
-          {cm(kMinCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
+          {cm(kSofteningCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
            fixed(figure(results, i, "wall_time_s"), 1), fixed(peak[i], 2), fixed(100 * depth[i], 2),
            has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–", has_scaled ? fixed(scaled_eta[i], 2) : "–",
            has_scaled ? fixed(scaled_peak[i], 2) : "–", has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
@@ -112,7 +112,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
       md.paragraph(series("Scaled η (2, 1, 0.5 cm), 2 ms peak", scaled_peak, 3, 1.0, "g") + ". " +
                    series("Scaled η, final penetration", scaled_depth, 3, 100.0, "cm") + ".");
     std::vector<LabelledRun> runs;
-    for (std::size_t i = 0; i < levels; ++i) runs.push_back({i, "η = 8, " + cm(kMinCells_m[i])});
+    for (std::size_t i = 0; i < levels; ++i) runs.push_back({i, "η = 8, " + cm(kSofteningCells_m[i])});
     ffp_depth_profiles_figure(results, runs, "Softening run, mesh convergence", "softening_convergence_profiles.png",
                               out);
   };

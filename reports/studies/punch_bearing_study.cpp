@@ -12,7 +12,7 @@ namespace ffp {
 
 namespace {
 
-const std::vector<double> kMinCells_m = {0.01, 0.005, 0.0025};
+const std::vector<double> kPunchCells_m = {0.01, 0.005, 0.0025};
 const std::vector<int> kParticlesPerCell = {1, 2, 4};  // the scenes' own 3×3 is the 0.5 cm level
 constexpr double kPunchRadius_m = 0.05;
 constexpr double kShieldSmooth = 5.69, kEasonShieldRough = 6.05;
@@ -31,7 +31,7 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Verification: a rigid circular punch on a Tresca soil";
   for (const Punch& punch : kPunches)
-    for (double h : kMinCells_m) {
+    for (double h : kPunchCells_m) {
       study.runs.push_back(scene_run(scenes_dir, punch.scene,
                                      std::string(punch.label) + " " + fixed(100 * h, 2) + " cm",
                                      {"mesh.min_cell_m=" + fixed(h, 4)}));
@@ -54,7 +54,7 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
         "exact impulse; by then the elastic part of the settlement at the limit load (Boussinesq, "
         "s/R = π(1 − ν) p/(4G) ≈ 1 %) is long passed, and the embedment (2.5 % of the diameter) raises the "
         "exact bearing pressure by about 1 % (Skempton's depth factor).");
-    const std::size_t levels = kMinCells_m.size();
+    const std::size_t levels = kPunchCells_m.size();
     std::vector<std::vector<std::string>> rows;
     std::vector<Series> curves;
     Series error_series[2];
@@ -64,17 +64,17 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
         const std::size_t i = k * levels + l;
         const double n = figure(results, i, "bearing_factor");
         const double error = n / kPunches[k].exact - 1.0;
-        rows.push_back({kPunches[k].label, fixed(100 * kMinCells_m[l], 2), fixed(kPunchRadius_m / kMinCells_m[l], 0),
-                        fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
-                        fixed(figure(results, i, "wall_time_s"), 1), fixed(n, 3), fixed(kPunches[k].exact, 2),
-                        fixed(100 * error, 1)});
+        rows.push_back({kPunches[k].label, fixed(100 * kPunchCells_m[l], 2),
+                        fixed(kPunchRadius_m / kPunchCells_m[l], 0), fixed(figure(results, i, "particles"), 0),
+                        fixed(figure(results, i, "steps"), 0), fixed(figure(results, i, "wall_time_s"), 1), fixed(n, 3),
+                        fixed(kPunches[k].exact, 2), fixed(100 * error, 1)});
         if (std::isfinite(error)) {
-          error_series[k].x.push_back(kMinCells_m[l] / kPunchRadius_m);
+          error_series[k].x.push_back(kPunchCells_m[l] / kPunchRadius_m);
           error_series[k].y.push_back(std::abs(error));
         }
         const CsvData h = results.history(i);
         if (h.has("mean_pressure_kPa")) {
-          Series c{{}, {}, std::string(kPunches[k].label) + " " + fixed(100 * kMinCells_m[l], 2) + " cm", "lines"};
+          Series c{{}, {}, std::string(kPunches[k].label) + " " + fixed(100 * kPunchCells_m[l], 2) + " cm", "lines"};
           const auto& s = h.column("penetration_m");
           const auto& p = h.column("mean_pressure_kPa");
           for (std::size_t r = 0; r < s.size(); ++r) {
