@@ -183,3 +183,32 @@ TEST_CASE(
   // Courant 0.01, 0.1781 m single step). Bound 0.75: smaller, with room for round-off paths.
   CHECK(body < 0.75 * soil_step);
 }
+
+TEST_CASE("with MUSL the subcycled steel FFP follows the rigid FFP at a fifty times smaller soil step (2 cm, 50 ms)",
+          "[ffp][subcycle][steel]") {
+  // ffp_steel.json's transfer: MUSL's answer does not depend on the soil's step, so the
+  // subcycled run at Courant 0.5 stands for the single step, whose soil runs at ~0.004.
+  FfpDescription steel_musl = steel(Subcycle::on);
+  steel_musl.solver.transfer = Transfer::musl;
+  FfpRun steel_run(steel_musl);
+  FfpDescription rigid = test::coarse_ffp();
+  rigid.solver.transfer = Transfer::musl;
+  FfpRun rigid_run(rigid);
+  rigid.solver.courant = 0.01;
+  FfpRun rigid_fine(rigid);
+  const double end = 0.05;
+  const auto a = history(steel_run, end, 0.001), b = history(rigid_run, end, 0.001),
+             c = history(rigid_fine, end, 0.001);
+  REQUIRE(a.size() == c.size());
+  REQUIRE(b.size() == c.size());
+  double to_fine = 0.0, soil_step = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    to_fine = std::max(to_fine, std::abs(a[k].depth - c[k].depth));
+    soil_step = std::max(soil_step, std::abs(b[k].depth - c[k].depth));
+  }
+  INFO("largest depth differences over 50 ms: subcycled steel − rigid at Courant 0.01 "
+       << to_fine << " m, rigid at Courant 0.5 − 0.01 " << soil_step << " m, of " << c.back().depth << " m");
+  // The bar for the subcycled steel run against the single step: 2 %.
+  CHECK(to_fine < 0.02 * c.back().depth);
+  CHECK(soil_step < 0.02 * c.back().depth);
+}
