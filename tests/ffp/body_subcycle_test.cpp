@@ -186,7 +186,7 @@ TEST_CASE(
 
 TEST_CASE("with MUSL the subcycled steel FFP follows the rigid FFP at a fifty times smaller soil step (2 cm, 50 ms)",
           "[ffp][subcycle][steel]") {
-  // ffp_steel.json's transfer: MUSL's answer does not depend on the soil's step, so the
+  // ffp_steel.json's transfer: MUSL's answer depends little on the soil's step, so the
   // subcycled run at Courant 0.5 stands for the single step, whose soil runs at ~0.004.
   FfpDescription steel_musl = steel(Subcycle::on);
   steel_musl.solver.transfer = Transfer::musl;
