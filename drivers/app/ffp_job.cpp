@@ -30,9 +30,9 @@
 /// the interval since the previous row (impulse difference / time difference), so Σ reaction·Δt over
 /// the rows is the exact impulse; deceleration_g uses the same mean. fields/particles_NNNN.vtu + .pvd,
 /// plots/time_histories.png (Fig. 7 style), plots/depth_profiles.png (Fig. 8b,c style),
-/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style; ffp_output.hpp), and summary figures
-/// (ffp_summary.hpp). An ffp (not a cpt) run also writes record.csv and plots/record_profiles.png:
-/// its deceleration interpreted as a measured drop is (record_output.hpp).
+/// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style) and plots/mean_stress_tT.TTT.png (ffp_output.hpp), and summary
+/// figures (ffp_summary.hpp). An ffp (not a cpt) run also writes record.csv and plots/record_profiles.png: its
+/// deceleration interpreted as a measured drop is (record_output.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -204,6 +204,7 @@ void PenetrometerJob::run(RunContext& context) {
   callbacks.write_fields = [&] {
     fields.write(s.particles, s.time_s, {false, {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}});
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
+    write_pressure_map(*run_, name_, plots);
   };
   const MpmOutputTimes times{scene_.end_time_s, scene_.output.history_interval_s, scene_.output.field_times_s};
   const MpmRunResult result = run_mpm(s, times, callbacks, cpt() ? "cpt" : "ffp", name_, context.show_progress);

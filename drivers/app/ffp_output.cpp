@@ -50,32 +50,74 @@ Plot line_plot(const std::vector<double>& x, const std::vector<double>& y, const
 
 }  // namespace
 
-void write_strain_map(const mpm::FfpRun& run, const std::string& name, double colour_max, const fs::path& plots) {
+namespace {
+
+/// The soil's particles coloured by `values` (one per soil particle), the outline on
+/// top, colours from 0 to colour_max, as plots/<file>.
+void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std::string& colour_label,
+                    std::vector<double> values, double colour_max, const fs::path& png) {
   const mpm::Simulation& s = run.simulation();
   const mpm::Particles& P = s.particles;
   const mpm::MaterialGroup& soil = s.groups[0];
   ColourMap map;
-  char title[160];
-  std::snprintf(title, sizeof title, "%s: deviatoric strain at t = %.3f s (penetration %.3f m)", name.c_str(), s.time_s,
-                run.penetration_m());
   map.title = title;
   map.x_label = "r (m)";
   map.y_label = "z (m)";
-  map.colour_label = "deviatoric strain";
-  for (std::size_t i = soil.begin; i < soil.end; ++i) {
-    map.x.push_back(P.r[i]);
-    map.y.push_back(P.z[i]);
-    map.value.push_back(deviatoric_strain(P.strain[i]));
-  }
+  map.colour_label = colour_label;
+  map.x.assign(P.r.begin() + static_cast<std::ptrdiff_t>(soil.begin),
+               P.r.begin() + static_cast<std::ptrdiff_t>(soil.end));
+  map.y.assign(P.z.begin() + static_cast<std::ptrdiff_t>(soil.begin),
+               P.z.begin() + static_cast<std::ptrdiff_t>(soil.end));
+  map.value = std::move(values);
   double z_top = 0.0;
   for (double z : map.y) z_top = std::max(z_top, z);
   map.overlays.push_back(outline(run, z_top + 0.05));
   map.colour_min = 0.0;
   map.colour_max = colour_max;
   map.point_size = 0.3;
+  write_png(map, png);
+}
+
+std::string map_title(const mpm::FfpRun& run, const std::string& name, const char* what) {
+  char title[160];
+  std::snprintf(title, sizeof title, "%s: %s at t = %.3f s (penetration %.3f m)", name.c_str(), what,
+                run.simulation().time_s, run.penetration_m());
+  return title;
+}
+
+std::string map_file(const char* stem, double time_s) {
   char file[64];
-  std::snprintf(file, sizeof file, "deviatoric_strain_t%.3f.png", s.time_s);
-  write_png(map, plots / file);
+  std::snprintf(file, sizeof file, "%s_t%.3f.png", stem, time_s);
+  return file;
+}
+
+}  // namespace
+
+void write_strain_map(const mpm::FfpRun& run, const std::string& name, double colour_max, const fs::path& plots) {
+  const mpm::Simulation& s = run.simulation();
+  const mpm::MaterialGroup& soil = s.groups[0];
+  std::vector<double> strain;
+  for (std::size_t i = soil.begin; i < soil.end; ++i) strain.push_back(deviatoric_strain(s.particles.strain[i]));
+  write_soil_map(run, map_title(run, name, "deviatoric strain"), "deviatoric strain", std::move(strain), colour_max,
+                 plots / map_file("deviatoric_strain", s.time_s));
+}
+
+void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const fs::path& plots) {
+  const mpm::Simulation& s = run.simulation();
+  const mpm::MaterialGroup& soil = s.groups[0];
+  std::vector<double> p_kPa;
+  for (std::size_t i = soil.begin; i < soil.end; ++i) p_kPa.push_back(1e-3 * mean_pressure(s.particles.stress[i]));
+  // Colours up to the 98th percentile: the few particles at the tip would otherwise take the
+  // whole scale and hide the pattern of the rest.
+  std::vector<double> sorted = p_kPa;
+  double top = 0.0;
+  if (!sorted.empty()) {
+    const auto k = static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(sorted.size() - 1));
+    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+    top = sorted[static_cast<std::size_t>(k)];
+  }
+  write_soil_map(run, map_title(run, name, "mean stress p"), "p (kPa)", std::move(p_kPa), top > 0.0 ? top : 1.0,
+                 plots / map_file("mean_stress", s.time_s));
 }
 
 void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name, const fs::path& plots) {

@@ -16,6 +16,11 @@ namespace ffp {
 void write_strain_map(const mpm::FfpRun& run, const std::string& name, double colour_max,
                       const std::filesystem::path& plots);
 
+/// The soil's mean stress p = −tr σ/3 (kPa, compression positive) the same way,
+/// plots/mean_stress_tT.TTT.png, coloured from 0 to the 98th percentile of p: the
+/// pattern of the pressure around the cone (the bands of README's issue 13 notes).
+void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const std::filesystem::path& plots);
+
 /// Fig. 7 (plots/time_histories.png: penetration, velocity, deceleration, reaction against time) and
 /// Fig. 8b,c (plots/depth_profiles.png: velocity and deceleration against depth).
 void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name, const std::filesystem::path& plots);
