@@ -155,6 +155,15 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     std::vector<LabelledRun> runs;
     for (std::size_t i = 0; i < n; ++i) runs.push_back({i, "min cell " + fixed(100 * kReferenceCells_m[i], 2) + " cm"});
     ffp_depth_profiles_figure(results, runs, "Mesh convergence", "convergence_profiles.png", out);
+    md.paragraph(
+        "The soil's mean stress p at t = 0.04 s on the 1, 0.5 and 0.25 cm levels (colours up to each map's 98th "
+        "percentile of p). Stripes and layers a few cells apart, finer as h halves, are the pattern that README's "
+        "issue 13 notes follow (the push of `cpt_mohr_coulomb.json` shows them more plainly; with a dilatant "
+        "flow, ψ = 20°, the same push has a smooth pressure bulb).");
+    for (std::size_t i = 1; i < n; ++i)
+      include_run_figure(results, i, "plots/mean_stress_t0.040.png",
+                         "convergence_p_" + fixed(100 * kReferenceCells_m[i], 2) + "cm.png",
+                         "Mean stress p at t = 0.04 s, min cell " + fixed(100 * kReferenceCells_m[i], 2) + " cm", out);
   };
   return study;
 }
