@@ -48,12 +48,8 @@ Plot line_plot(const std::vector<double>& x, const std::vector<double>& y, const
   return p;
 }
 
-}  // namespace
-
-namespace {
-
 /// The soil's particles coloured by `values` (one per soil particle), the outline on
-/// top, colours from 0 to colour_max, as plots/<file>.
+/// top, colours from 0 to colour_max, written to `png`.
 void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std::string& colour_label,
                     std::vector<double> values, double colour_max, const fs::path& png) {
   const mpm::Simulation& s = run.simulation();
