@@ -4,6 +4,8 @@
 
 #include <csignal>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <thread>
 
 #include <fcntl.h>
@@ -98,4 +100,19 @@ TEST_CASE("version and help answer and succeed", "[cli]") {
   const auto h = run_ffp({"--help"}, scratch.path());
   CHECK(h.exit_code == 0);
   CHECK(h.out.find("run SCENE.json") != std::string::npos);
+}
+
+TEST_CASE("an FFP run's particle fields carry the stress components beside p and q", "[cli]") {
+  Scratch scratch;
+  const auto r =
+      run_ffp({"run", FFP_SOURCE_DIR "/data/scenes/ffp_reference.json", "--out", "result", "--quiet", "--set",
+               "mesh.min_cell_m=0.02", "--set", "end_time_s=0.004", "--set", "output.field_times_s=[0.002]"},
+              scratch.path());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(scratch.path() / "result" / "fields" / "particles_0000.vtu");
+  const std::string vtu((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* name :
+       {"sigma_rr_kPa", "sigma_zz_kPa", "sigma_tt_kPa", "sigma_rz_kPa", "p_kPa", "q_kPa", "plastic_deviatoric_strain"})
+    CHECK(vtu.find(std::string("Name=\"") + name + "\"") != std::string::npos);
 }
