@@ -147,14 +147,16 @@ void claim_persistent_folder(const fs::path& folder, const std::string& option, 
   std::error_code ec;
   if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
     throw OutputFolderRefused(option + ": '" + folder.string() + "' is a file, not a folder: choose another name");
-  if (fs::exists(folder / kOutputManifest, ec)) return;
-  // A manifest temporary whose writer is dead (killed between writing and renaming it) is ffp's own
-  // leftover: removed, so that it neither stays nor makes the folder look foreign.
+  // A temporary of the folder's own files (its manifest, a sweep's table) whose writer is dead (killed
+  // between writing and renaming it) is ffp's leftover: removed, so that it neither stays nor makes the
+  // folder look foreign.
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const long owner = temporary_owner(entry.path().filename().string(), kOutputManifest);
+    const std::string name = entry.path().filename().string();
+    const long owner = std::max(temporary_owner(name, kOutputManifest), temporary_owner(name, "sweep.csv"));
     std::error_code ignored;
     if (owner > 0 && !process_alive(owner)) fs::remove(entry.path(), ignored);
   }
+  if (fs::exists(folder / kOutputManifest, ec)) return;
   bool ours = true;
   std::vector<std::string> foreign;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
