@@ -228,6 +228,16 @@ FfpRun::FfpRun(const FfpDescription& d)
                                                       1.0 - pic * std::min(1.0, sim.dt_s / soil_dt_s_);
                                                 }});
   }
+  if (d.pic_blend == PicBlend::per_second && s.settings.flip_fraction < 1.0) {
+    // Per soil step the share falls with Δt ∝ h, so that every mesh damps at the 1 cm mesh's rate
+    // per second (per_soil_step's rate grows as 1/h: twice the PIC per second at each halving).
+    const double pic = 1.0 - s.settings.flip_fraction;
+    const double reference_dt_s = 0.5 * kPicReferenceCell_m / (c_p + std::abs(d.velocity_m_s));
+    s.stages.insert_before("update_particles", {"scale_pic_blend", [pic, reference_dt_s](Simulation& sim) {
+                                                  sim.settings.flip_fraction =
+                                                      1.0 - std::min(1.0, pic * sim.dt_s / reference_dt_s);
+                                                }});
+  }
 }
 
 double FfpRun::soil_intrusion_m() const {

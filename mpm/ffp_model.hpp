@@ -72,12 +72,16 @@ struct DeformableFfp {
 /// How the PIC share (1 − flip_fraction) of the particle velocity update is applied.
 enum class PicBlend : std::uint8_t {
   per_step,       ///< the core's rule: (1 − α) of PIC every step, whatever Δt is
-  per_soil_step,  ///< (1 − α)·Δt/Δt_soil per step: the same damping per unit time at any Δt
+  per_soil_step,  ///< (1 − α)·Δt/Δt_soil per step: the same damping per unit time at any Δt of one mesh
+  per_second,     ///< (1 − α)·Δt/Δt_1cm per step: the same damping per unit time on every mesh (issue 13)
 };
+/// The cell of per_second's reference step Δt_1cm = 0.5·h/(c_p + |v0|): the reference FFP's 1 cm.
+inline constexpr double kPicReferenceCell_m = 0.01;
 using PicBlendName = std::pair<PicBlend, std::string_view>;
 /// The scene's names of PicBlend, in the order messages list them.
-inline constexpr auto kPicBlendNames =
-    std::to_array<PicBlendName>({{PicBlend::per_soil_step, "per_soil_step"}, {PicBlend::per_step, "per_step"}});
+inline constexpr auto kPicBlendNames = std::to_array<PicBlendName>({{PicBlend::per_soil_step, "per_soil_step"},
+                                                                    {PicBlend::per_step, "per_step"},
+                                                                    {PicBlend::per_second, "per_second"}});
 inline std::string to_string(PicBlend b) {
   return std::string(std::ranges::find(kPicBlendNames, b, &PicBlendName::first)->second);
 }

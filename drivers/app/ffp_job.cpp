@@ -19,8 +19,9 @@
 ///   mesh       {min_cell_m 0.01, max_cell_m 3·min, below_cell_m 2·min, min_compressed_cell_m min,
 ///               fine_radius_m 0.15, band_below_m 0.05, fine_above_m 0.3, air_above_m 0.1, growth 1.2}
 ///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
-///               pic_blend per_soil_step | per_step (the PIC share 1 − flip_fraction per soil CFL step
-///               at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt: mpm/ffp_model.hpp),
+///               pic_blend per_soil_step | per_step | per_second (the PIC share 1 − flip_fraction per soil
+///               CFL step at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt; or per the 1 cm
+///               mesh's soil step on every mesh: mpm/ffp_model.hpp),
 ///               courant 0.5, strain_smoothing volumetric, subcycle off | auto | on (a deformable FFP's own
 ///               substeps inside the soil's step: mpm/body_subcycle.hpp)}
 ///   output     {history_interval_s 2e-4, field_times_s [0.04, 0.06, end], strain_colour_max 0.5}

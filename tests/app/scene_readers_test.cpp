@@ -228,7 +228,7 @@ TEST_CASE("ffp reader: the reference drop and its bad keys", "[app][scene][ffp]"
   CHECK(cpt.model.prescribed);
   CHECK(cpt.model.velocity_m_s < 0.0);
   CHECK(scene_error([] { ffp_scene("ffp_reference", PenetrometerKind::ffp, {"solver.pic_blend=sometimes"}); }) ==
-        "solver.pic_blend: 'sometimes' is not allowed: must be one of: per_soil_step, per_step");
+        "solver.pic_blend: 'sometimes' is not allowed: must be one of: per_soil_step, per_step, per_second");
   CHECK(scene_error([] { ffp_scene("ffp_reference", PenetrometerKind::ffp, {"ffp.mass_kg=0"}); }) ==
         "ffp.mass_kg: = 0 is out of range: must be > 0 and ≤ 1e+06 kg");
   CHECK(scene_error([] { ffp_scene("ffp_reference", PenetrometerKind::ffp, {"ffp.rigid_body_force=contact"}); }) ==

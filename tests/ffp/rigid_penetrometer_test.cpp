@@ -216,3 +216,27 @@ TEST_CASE("with the particles' contact surface no sand particle's domain crosses
   CHECK(M * (v0 - run.velocity_down_m_s()) + M * d.gravity_m_s2 * s.time_s ==
         Approx(run.state().impulse_N_s).epsilon(1e-10));
 }
+
+TEST_CASE("pic_blend per_second damps each mesh at the 1 cm mesh's PIC rate; per_soil_step at its own", "[ffp]") {
+  // The share of a step is (1 − α)·Δt/Δt_ref: per_second's Δt_ref is the 1 cm mesh's soil step, so a
+  // 2 cm mesh (Δt twice as long at the same Courant number) takes twice the share per step and the same
+  // per second; per_soil_step's Δt_ref is the mesh's own step, the same share per step on every mesh and
+  // so twice the PIC per second at each halving of h. The first step's Δt is the Courant number times
+  // the CFL limit at the impact speed, which is how both reference steps are made (to ~1 %: the limit
+  // takes the grid's smallest spacing at the soil's wave speed).
+  const auto share_of_first_step = [](double cell_m, PicBlend blend) {
+    FfpDescription d = coarse_ffp();
+    d.mesh.min_cell_m = cell_m;
+    d.mesh.max_cell_m = 3 * cell_m;
+    d.mesh.below_cell_m = 2 * cell_m;
+    d.pic_blend = blend;
+    FfpRun run(d);
+    const double pic = 1.0 - run.simulation().settings.flip_fraction;
+    run.advance();
+    return (1.0 - run.simulation().settings.flip_fraction) / pic;
+  };
+  CHECK(share_of_first_step(0.01, PicBlend::per_second) == Approx(1.0).epsilon(0.02));
+  CHECK(share_of_first_step(0.02, PicBlend::per_second) == Approx(2.0).epsilon(0.02));
+  CHECK(share_of_first_step(0.01, PicBlend::per_soil_step) == Approx(1.0).epsilon(0.02));
+  CHECK(share_of_first_step(0.02, PicBlend::per_soil_step) == Approx(1.0).epsilon(0.02));
+}
