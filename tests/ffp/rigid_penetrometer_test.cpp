@@ -217,7 +217,7 @@ TEST_CASE("with the particles' contact surface no sand particle's domain crosses
         Approx(run.state().impulse_N_s).epsilon(1e-10));
 }
 
-TEST_CASE("pic_blend per_second damps each mesh at the 1 cm mesh's PIC rate; per_soil_step at its own", "[ffp]") {
+TEST_CASE("pic_blend per_second damps each mesh at the 1 cm mesh's PIC rate, per_soil_step at its own", "[ffp]") {
   // The share of a step is (1 − α)·Δt/Δt_ref: per_second's Δt_ref is the 1 cm mesh's soil step, so a
   // 2 cm mesh (Δt twice as long at the same Courant number) takes twice the share per step and the same
   // per second; per_soil_step's Δt_ref is the mesh's own step, the same share per step on every mesh and
