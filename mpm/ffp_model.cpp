@@ -221,21 +221,19 @@ FfpRun::FfpRun(const FfpDescription& d)
   // At the project's standard Courant number 0.5, so that the damping per unit time does not
   // follow the Courant number either.
   soil_dt_s_ = 0.5 * s.grid.min_spacing() / (c_p + std::abs(d.velocity_m_s));
-  if (d.pic_blend == PicBlend::per_soil_step && s.settings.flip_fraction < 1.0) {
+  if (d.pic_blend != PicBlend::per_step && s.settings.flip_fraction < 1.0) {
+    // The share of a step is (1 − α)·Δt/Δt_ref. per_soil_step: Δt_ref is this mesh's soil step, and a step
+    // takes at most 1 − α. per_second: Δt_ref is the 1 cm mesh's, so the share per step falls with Δt ∝ h
+    // and every mesh damps at the same rate per second (per_soil_step's rate grows as 1/h: twice the PIC
+    // per second at each halving); a coarse mesh's long step may take more than 1 − α, up to all of it.
     const double pic = 1.0 - s.settings.flip_fraction;
-    s.stages.insert_before("update_particles", {"scale_pic_blend", [this, pic](Simulation& sim) {
+    const bool per_second = d.pic_blend == PicBlend::per_second;
+    const double reference_dt_s =
+        per_second ? 0.5 * kPicReferenceCell_m / (c_p + std::abs(d.velocity_m_s)) : soil_dt_s_;
+    s.stages.insert_before("update_particles", {"scale_pic_blend", [pic, per_second, reference_dt_s](Simulation& sim) {
                                                   sim.settings.flip_fraction =
-                                                      1.0 - pic * std::min(1.0, sim.dt_s / soil_dt_s_);
-                                                }});
-  }
-  if (d.pic_blend == PicBlend::per_second && s.settings.flip_fraction < 1.0) {
-    // Per soil step the share falls with Δt ∝ h, so that every mesh damps at the 1 cm mesh's rate
-    // per second (per_soil_step's rate grows as 1/h: twice the PIC per second at each halving).
-    const double pic = 1.0 - s.settings.flip_fraction;
-    const double reference_dt_s = 0.5 * kPicReferenceCell_m / (c_p + std::abs(d.velocity_m_s));
-    s.stages.insert_before("update_particles", {"scale_pic_blend", [pic, reference_dt_s](Simulation& sim) {
-                                                  sim.settings.flip_fraction =
-                                                      1.0 - std::min(1.0, pic * sim.dt_s / reference_dt_s);
+                                                      per_second ? 1.0 - std::min(1.0, pic * sim.dt_s / reference_dt_s)
+                                                                 : 1.0 - pic * std::min(1.0, sim.dt_s / reference_dt_s);
                                                 }});
   }
 }
