@@ -203,7 +203,8 @@ void PenetrometerJob::run(RunContext& context) {
   callbacks.after_step = [&] { observe_step(extremes); };
   callbacks.after_step_row = [&] { observe_row(extremes); };
   callbacks.write_fields = [&] {
-    fields.write(s.particles, s.time_s, {true, {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}});
+    fields.write(s.particles, s.time_s,
+                 {.stress_components = true, .extra = {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}});
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
     write_pressure_map(*run_, name_, plots);
   };

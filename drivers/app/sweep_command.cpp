@@ -44,7 +44,7 @@ std::vector<std::string> split_values(const std::string& list) {
 
 /// Writes sweep.csv from the collected cases, lists the missing and failed ones; exit 0 only when all finished.
 int report_collected(const fs::path& dir, const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
-  write_file_atomically(dir / "sweep.csv", sweep_table(keys, cases));
+  write_file_atomically(dir / kSweepTable, sweep_table(keys, cases));
   std::size_t missing = 0, failed = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::string what;
@@ -59,7 +59,7 @@ int report_collected(const fs::path& dir, const std::vector<std::string>& keys, 
     }
   }
   std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing\n",
-               (dir / "sweep.csv").string().c_str(), cases.size(), cases.size() - missing - failed, failed, missing);
+               (dir / kSweepTable).string().c_str(), cases.size(), cases.size() - missing - failed, failed, missing);
   return missing == 0 && failed == 0 ? 0 : 1;
 }
 
@@ -108,7 +108,7 @@ int command_sweep(const SweepOptions& options) {
     if (!emit.empty() || slurm) {
       const fs::path dir = !emit.empty() ? emit : (out.empty() ? fs::path("results") / (name + "-sweep") : out);
       claim_persistent_folder(dir, !emit.empty() ? "--emit" : "--out", "sweep", force);
-      fs::remove(dir / "sweep.csv");
+      fs::remove(dir / kSweepTable);
       EmitOptions options;
       options.ffp_binary = fs::read_symlink("/proc/self/exe");
       options.threads_per_case = threads;
@@ -125,7 +125,7 @@ int command_sweep(const SweepOptions& options) {
     claim_persistent_folder(out, "--out", "sweep", force);
     claim_persistent_folder(out / "runs", "--out", "run cache", force);
     // A table from an earlier sweep into this folder must not pass for this one's.
-    fs::remove(out / "sweep.csv");
+    fs::remove(out / kSweepTable);
     std::vector<RunRequest> requests;
     for (const SweepCase& c : cases) requests.push_back({c.label, scene_file, c.overrides});
     std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), jobs, out.string().c_str());
@@ -140,8 +140,8 @@ int command_sweep(const SweepOptions& options) {
                      outcomes[i].error.c_str());
       }
     }
-    write_file_atomically(out / "sweep.csv", sweep_table(keys, results));
-    std::fprintf(stderr, "wrote %s\n", (out / "sweep.csv").string().c_str());
+    write_file_atomically(out / kSweepTable, sweep_table(keys, results));
+    std::fprintf(stderr, "wrote %s\n", (out / kSweepTable).string().c_str());
     return failures == 0 ? 0 : 1;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -152,7 +152,7 @@ void claim_persistent_folder(const fs::path& folder, const std::string& option, 
   // folder look foreign.
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    const long owner = std::max(temporary_owner(name, kOutputManifest), temporary_owner(name, "sweep.csv"));
+    const long owner = std::max(temporary_owner(name, kOutputManifest), temporary_owner(name, kSweepTable));
     std::error_code ignored;
     if (owner > 0 && !process_alive(owner)) fs::remove(entry.path(), ignored);
   }

@@ -20,6 +20,9 @@ namespace ffp {
 
 /// Written last into every folder ffp makes, so its presence means "complete".
 inline constexpr const char* kOutputManifest = ".ffp-output.json";
+/// A sweep's table in its folder (ffp sweep, ffp collect); claim_persistent_folder removes a dead writer's temporary of
+/// it.
+inline constexpr const char* kSweepTable = "sweep.csv";
 
 /// Bad input of a kind: the folder the user named holds files ffp did not write.
 class OutputFolderRefused : public SceneError {
