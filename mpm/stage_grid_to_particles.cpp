@@ -7,6 +7,7 @@
 
 #include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
+#include "mpm/support_row.hpp"
 #include "mpm/velocity_gradient.hpp"
 
 namespace ffp::mpm {
@@ -36,9 +37,49 @@ void update_particles_impl(Simulation& s) {
   const Walls& walls = s.walls;
   const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   std::atomic<long> clamps{0};            // rare (should stay 0): an atomic costs nothing here
+  // A GIMP particle whose support rows fit (mpm/support_row.hpp): a row of nodes per vector.
+  auto update_by_rows = [&](std::size_t p, NodalField& f, const ShapeWeights& w) {
+    const Row wr = load_row(w.wr);
+    Row N[3];
+    std::size_t node[3];
+    for (int b = 0; b < 3; ++b) {
+      node[b] = s.grid.node(w.node_r, w.node_z + b);
+      N[b] = wr * w.wz[b];
+    }
+    if (p < n) {  // not a subcycled body's particle
+      Row vr{}, vz{}, dvr{}, dvz{};
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t i = node[b];
+        const Row new_r = load_row(&f.velocity_new_r[i]), new_z = load_row(&f.velocity_new_z[i]);
+        vr += N[b] * new_r;
+        vz += N[b] * new_z;
+        dvr += N[b] * (new_r - load_row(&f.velocity_r[i]));
+        dvz += N[b] * (new_z - load_row(&f.velocity_z[i]));
+      }
+      const double v_r = row_sum(vr), v_z = row_sum(vz);
+      P.vr[p] = alpha * (P.vr[p] + row_sum(dvr)) + (1.0 - alpha) * v_r;
+      P.vz[p] = alpha * (P.vz[p] + row_sum(dvz)) + (1.0 - alpha) * v_z;
+      if constexpr (Move) {
+        long clamped = 0;
+        move_within_walls(P, p, P.r[p] + dt * v_r, P.z[p] + dt * v_z, walls, clamped);
+        if (clamped) clamps += clamped;
+      }
+    }
+    if constexpr (Remap) {
+      const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t i = node[b];
+        store_row(&f.momentum_r[i], load_row(&f.momentum_r[i]) + N[b] * pr);
+        store_row(&f.momentum_z[i], load_row(&f.momentum_z[i]) + N[b] * pz);
+      }
+    }
+  };
   auto update = [&](std::size_t p) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
+    if constexpr (S == 3) {
+      if (row_fits(s.grid, w)) return update_by_rows(p, f, w);
+    }
     // S_ip and the nodes, formed once for the gather and the remap.
     // S_ip of nodes a = 0, 1 of each row as a pair (mpm/pair.hpp), node 2 alone: the
     // same products, and each sum takes its terms in the same order, as node by node.
@@ -150,6 +191,30 @@ inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const d
   // Nodes a = 0, 1 of a row as a pair (mpm/pair.hpp): the same products, the
   // sums in the same order as node by node.
   VelocityGradient L;
+  if constexpr (S == 3) {
+    if (row_fits(grid, w)) {  // a row of nodes per vector (mpm/support_row.hpp)
+      const Row wr = load_row(w.wr), gr = load_row(w.gr);
+      Row rr{}, rz{}, zr{}, zz{}, tt{};
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t i = grid.node(w.node_r, w.node_z + b);
+        const double wz = w.wz[b], gz = w.gz[b];
+        const Row N = wr * wz, Gr = gr * wz, Gz = wr * gz;
+        const Row vr_row = load_row(vr + i), vz_row = load_row(vz + i);
+        rr += vr_row * Gr;
+        rz += vr_row * Gz;
+        zr += vz_row * Gr;
+        zz += vz_row * Gz;
+        tt += vr_row * N;
+      }
+      L.rr = row_sum(rr);
+      L.rz = row_sum(rz);
+      L.zr = row_sum(zr);
+      L.zz = row_sum(zz);
+      L.tt = row_sum(tt) * w.inverse_r;
+      apply_velocity_gradient(L, dt, de, spin_dt, volume);
+      return;
+    }
+  }
   const Pair wr01 = pair(w.wr[0], w.wr[1]), gr01 = pair(w.gr[0], w.gr[1]);
   for (int b = 0; b < S; ++b) {
     const std::size_t i = grid.node(w.node_r, w.node_z + b);

@@ -5,6 +5,7 @@
 
 #include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
+#include "mpm/support_row.hpp"
 
 namespace ffp::mpm {
 
@@ -93,6 +94,27 @@ inline void add_mass_momentum_force(const Simulation& s, std::size_t p, NodalFie
   const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
   const Voigt sig = particle_force_stress(s, p, smoothing, limit);
   const double V = P.volume[p], s_rr = sig[0], s_zz = sig[1], s_rz = sig[3], hoop = sig[2] * w.inverse_r;
+  if constexpr (S == 3) {
+    if (row_fits(s.grid, w)) {
+      // Row by row (mpm/support_row.hpp), with S_ip = s_r,a s_z,b and G_ip = (s_r,a' s_z,b,
+      // s_r,a s_z,b') factored: f_r,i = −V (σ_rr G_r + σ_rz G_z + σ_θθ S/r)
+      //   = s_z,b · [−V (σ_rr s_r' + σ_θθ s_r/r)] + s_z,b' · [−V σ_rz s_r], and so on.
+      const Row wr = load_row(w.wr), gr = load_row(w.gr);
+      const Row mass_r = m * wr, momentum_rr = pr * wr, momentum_zr = pz * wr;
+      const Row force_r_w = -V * (s_rr * gr + hoop * wr), force_r_g = -V * s_rz * wr;
+      const Row force_z_w = -V * s_rz * gr, force_z_g = -V * s_zz * wr;
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t i = s.grid.node(w.node_r, w.node_z + b);
+        const double wz = w.wz[b], gz = w.gz[b];
+        store_row(&f.mass[i], load_row(&f.mass[i]) + mass_r * wz);
+        store_row(&f.momentum_r[i], load_row(&f.momentum_r[i]) + momentum_rr * wz);
+        store_row(&f.momentum_z[i], load_row(&f.momentum_z[i]) + momentum_zr * wz);
+        store_row(&f.internal_force_r[i], load_row(&f.internal_force_r[i]) + (force_r_w * wz + force_r_g * gz));
+        store_row(&f.internal_force_z[i], load_row(&f.internal_force_z[i]) + (force_z_w * wz + force_z_g * gz));
+      }
+      return;
+    }
+  }
   double* __restrict mass = f.mass.data();
   double* __restrict momentum_r = f.momentum_r.data();
   double* __restrict momentum_z = f.momentum_z.data();

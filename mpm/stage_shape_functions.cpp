@@ -40,6 +40,8 @@ void compute_shape_functions(Simulation& s) {
         w.wz[k] = wz.w[k];
         w.gz[k] = wz.g[k];
       }
+      w.wr[3] = 0.0;
+      w.gr[3] = 0.0;
       w.inverse_r = 1.0 / r;
       s.cell[i] = static_cast<std::uint32_t>(s.grid.cell(cr, cz));
       s.strip[i] = s.bins.strip_of(cr, cz);
