@@ -5,7 +5,6 @@
 #include <cmath>
 #include <span>
 
-#include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
 #include "mpm/velocity_gradient.hpp"
@@ -28,6 +27,15 @@ inline void move_within_walls(Particles& P, std::size_t p, double r, double z, c
   P.z[p] = z;
 }
 
+/// fn(node, S_ip) over the S×S support of a particle.
+template <int S, class Fn>
+inline void for_support_nodes(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
+  for (int b = 0; b < S; ++b) {
+    const std::size_t row = grid.node(w.node_r, w.node_z + b);
+    for (int a = 0; a < S; ++a) fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b]);
+  }
+}
+
 /// Remap: also p_i += S_ip m_p v_p^{n+1} while the particle's weights are at hand
 /// (MUSL), in ParticleBins order, so every nodal sum keeps its one fixed order.
 template <int S, bool Move, bool Remap>
@@ -37,24 +45,25 @@ void update_particles_impl(Simulation& s) {
   const Walls& walls = s.walls;
   const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   std::atomic<long> clamps{0};            // rare (should stay 0): an atomic costs nothing here
-  // A GIMP particle whose support rows fit (mpm/support_row.hpp): a row of nodes per vector.
+  // A particle whose support rows go as vectors (mpm/support_row.hpp): a row of nodes per vector.
+  using Vec = SupportRow<S>;
   auto update_by_rows = [&](std::size_t p, NodalField& f, const ShapeWeights& w) {
-    const Row wr = load_row(w.wr);
-    Row N[3];
-    std::size_t node[3];
-    for (int b = 0; b < 3; ++b) {
+    const Vec wr = load_support_row<S>(w.wr);
+    Vec N[S];
+    std::size_t node[S];
+    for (int b = 0; b < S; ++b) {
       node[b] = s.grid.node(w.node_r, w.node_z + b);
       N[b] = wr * w.wz[b];
     }
     if (p < n) {  // not a subcycled body's particle
-      Row vr{}, vz{}, dvr{}, dvz{};
-      for (int b = 0; b < 3; ++b) {
+      Vec vr{}, vz{}, dvr{}, dvz{};
+      for (int b = 0; b < S; ++b) {
         const std::size_t i = node[b];
-        const Row new_r = load_row(&f.velocity_new_r[i]), new_z = load_row(&f.velocity_new_z[i]);
+        const Vec new_r = load_support_row<S>(&f.velocity_new_r[i]), new_z = load_support_row<S>(&f.velocity_new_z[i]);
         vr += N[b] * new_r;
         vz += N[b] * new_z;
-        dvr += N[b] * (new_r - load_row(&f.velocity_r[i]));
-        dvz += N[b] * (new_z - load_row(&f.velocity_z[i]));
+        dvr += N[b] * (new_r - load_support_row<S>(&f.velocity_r[i]));
+        dvz += N[b] * (new_z - load_support_row<S>(&f.velocity_z[i]));
       }
       const double v_r = row_sum(vr), v_z = row_sum(vz);
       P.vr[p] = alpha * (P.vr[p] + row_sum(dvr)) + (1.0 - alpha) * v_r;
@@ -67,54 +76,26 @@ void update_particles_impl(Simulation& s) {
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
-      for (int b = 0; b < 3; ++b) {
+      for (int b = 0; b < S; ++b) {
         const std::size_t i = node[b];
-        store_row(&f.momentum_r[i], load_row(&f.momentum_r[i]) + N[b] * pr);
-        store_row(&f.momentum_z[i], load_row(&f.momentum_z[i]) + N[b] * pz);
+        store_support_row<S>(&f.momentum_r[i], load_support_row<S>(&f.momentum_r[i]) + N[b] * pr);
+        store_support_row<S>(&f.momentum_z[i], load_support_row<S>(&f.momentum_z[i]) + N[b] * pz);
       }
     }
   };
   auto update = [&](std::size_t p) {
     NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
     const ShapeWeights& w = s.weights[p];
-    if constexpr (S == 3) {
-      if (row_fits(s.grid, w)) return update_by_rows(p, f, w);
-    }
-    // S_ip and the nodes, formed once for the gather and the remap.
-    // S_ip of nodes a = 0, 1 of each row as a pair (mpm/pair.hpp), node 2 alone: the
-    // same products, and each sum takes its terms in the same order, as node by node.
-    const Pair wr01 = pair(w.wr[0], w.wr[1]);
-    Pair N01[S];
-    double N2[S];
-    std::size_t node[S];
-    for (int b = 0; b < S; ++b) {
-      node[b] = s.grid.node(w.node_r, w.node_z + b);
-      N01[b] = wr01 * w.wz[b];
-      if constexpr (S == 3) N2[b] = w.wr[2] * w.wz[b];
-    }
+    if (rows_fit<S>(s.grid, w)) return update_by_rows(p, f, w);
+    // A GIMP edge particle: node by node.
     if (p < n) {  // not a subcycled body's particle
-      const double* __restrict v_r = f.velocity_r.data();
-      const double* __restrict v_z = f.velocity_z.data();
-      const double* __restrict v_new_r = f.velocity_new_r.data();
-      const double* __restrict v_new_z = f.velocity_new_z.data();
       double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
-      for (int b = 0; b < S; ++b) {
-        const std::size_t i = node[b];
-        const Pair new_r = load(v_new_r + i), new_z = load(v_new_z + i);
-        const Pair tr = N01[b] * new_r, tz = N01[b] * new_z;
-        const Pair dr = N01[b] * (new_r - load(v_r + i)), dz = N01[b] * (new_z - load(v_z + i));
-        add_lanes(vr, tr);
-        add_lanes(vz, tz);
-        add_lanes(dvr, dr);
-        add_lanes(dvz, dz);
-        if constexpr (S == 3) {
-          const std::size_t k = i + 2;
-          vr += N2[b] * v_new_r[k];
-          vz += N2[b] * v_new_z[k];
-          dvr += N2[b] * (v_new_r[k] - v_r[k]);
-          dvz += N2[b] * (v_new_z[k] - v_z[k]);
-        }
-      }
+      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+        vr += N * f.velocity_new_r[i];
+        vz += N * f.velocity_new_z[i];
+        dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
+        dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+      });
       P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
       P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
       if constexpr (Move) {
@@ -125,17 +106,10 @@ void update_particles_impl(Simulation& s) {
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
-      double* __restrict momentum_r = f.momentum_r.data();
-      double* __restrict momentum_z = f.momentum_z.data();
-      for (int b = 0; b < S; ++b) {
-        const std::size_t i = node[b];
-        store(momentum_r + i, load(momentum_r + i) + N01[b] * pr);
-        store(momentum_z + i, load(momentum_z + i) + N01[b] * pz);
-        if constexpr (S == 3) {
-          momentum_r[i + 2] += N2[b] * pr;
-          momentum_z[i + 2] += N2[b] * pz;
-        }
-      }
+      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+        f.momentum_r[i] += N * pr;
+        f.momentum_z[i] += N * pz;
+      });
     }
   };
   if constexpr (Remap) {
@@ -166,15 +140,10 @@ void move_particles_impl(Simulation& s) {
       const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
       const ShapeWeights& w = s.weights[p];
       double vr = 0.0, vz = 0.0;
-      for (int b = 0; b < S; ++b) {
-        const std::size_t row = s.grid.node(w.node_r, w.node_z + b);
-        for (int a = 0; a < S; ++a) {
-          const std::size_t i = row + static_cast<std::size_t>(a);
-          const double N = w.wr[a] * w.wz[b];
-          vr += N * f.velocity_r[i];
-          vz += N * f.velocity_z[i];
-        }
-      }
+      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+        vr += N * f.velocity_r[i];
+        vz += N * f.velocity_z[i];
+      });
       move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
     }
     clamps += clamped;
@@ -188,52 +157,40 @@ using NodalArray = std::vector<double> NodalField::*;
 template <int S>
 inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const double* __restrict vr,
                                 const double* __restrict vz, double dt, Voigt& de, double& spin_dt, double& volume) {
-  // Nodes a = 0, 1 of a row as a pair (mpm/pair.hpp): the same products, the
-  // sums in the same order as node by node.
   VelocityGradient L;
-  if constexpr (S == 3) {
-    if (row_fits(grid, w)) {  // a row of nodes per vector (mpm/support_row.hpp)
-      const Row wr = load_row(w.wr), gr = load_row(w.gr);
-      Row rr{}, rz{}, zr{}, zz{}, tt{};
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t i = grid.node(w.node_r, w.node_z + b);
-        const double wz = w.wz[b], gz = w.gz[b];
-        const Row N = wr * wz, Gr = gr * wz, Gz = wr * gz;
-        const Row vr_row = load_row(vr + i), vz_row = load_row(vz + i);
-        rr += vr_row * Gr;
-        rz += vr_row * Gz;
-        zr += vz_row * Gr;
-        zz += vz_row * Gz;
-        tt += vr_row * N;
-      }
-      L.rr = row_sum(rr);
-      L.rz = row_sum(rz);
-      L.zr = row_sum(zr);
-      L.zz = row_sum(zz);
-      L.tt = row_sum(tt) * w.inverse_r;
-      apply_velocity_gradient(L, dt, de, spin_dt, volume);
-      return;
+  if (rows_fit<S>(grid, w)) {  // a row of nodes per vector (mpm/support_row.hpp)
+    using Vec = SupportRow<S>;
+    const Vec wr = load_support_row<S>(w.wr), gr = load_support_row<S>(w.gr);
+    Vec rr{}, rz{}, zr{}, zz{}, tt{};
+    for (int b = 0; b < S; ++b) {
+      const std::size_t i = grid.node(w.node_r, w.node_z + b);
+      const double wz = w.wz[b], gz = w.gz[b];
+      const Vec N = wr * wz, Gr = gr * wz, Gz = wr * gz;
+      const Vec vr_row = load_support_row<S>(vr + i), vz_row = load_support_row<S>(vz + i);
+      rr += vr_row * Gr;
+      rz += vr_row * Gz;
+      zr += vz_row * Gr;
+      zz += vz_row * Gz;
+      tt += vr_row * N;
     }
+    L.rr = row_sum(rr);
+    L.rz = row_sum(rz);
+    L.zr = row_sum(zr);
+    L.zz = row_sum(zz);
+    L.tt = row_sum(tt) * w.inverse_r;
+    apply_velocity_gradient(L, dt, de, spin_dt, volume);
+    return;
   }
-  const Pair wr01 = pair(w.wr[0], w.wr[1]), gr01 = pair(w.gr[0], w.gr[1]);
-  for (int b = 0; b < S; ++b) {
-    const std::size_t i = grid.node(w.node_r, w.node_z + b);
-    const double wz = w.wz[b], gz = w.gz[b];
-    const Pair N = wr01 * wz, Gr = gr01 * wz, Gz = wr01 * gz;
-    const Pair vr01 = load(vr + i), vz01 = load(vz + i);
-    add_lanes(L.rr, vr01 * Gr);
-    add_lanes(L.rz, vr01 * Gz);
-    add_lanes(L.zr, vz01 * Gr);
-    add_lanes(L.zz, vz01 * Gz);
-    add_lanes(L.tt, vr01 * N);
-    if constexpr (S == 3) {
-      const std::size_t k = i + 2;
-      const double N2 = w.wr[2] * wz, Gr2 = w.gr[2] * wz, Gz2 = w.wr[2] * gz;
-      L.rr += vr[k] * Gr2;
-      L.rz += vr[k] * Gz2;
-      L.zr += vz[k] * Gr2;
-      L.zz += vz[k] * Gz2;
-      L.tt += vr[k] * N2;
+  for (int b = 0; b < S; ++b) {  // a GIMP edge particle: node by node
+    const std::size_t row = grid.node(w.node_r, w.node_z + b);
+    for (int a = 0; a < S; ++a) {
+      const std::size_t i = row + static_cast<std::size_t>(a);
+      const double N = w.wr[a] * w.wz[b], Gr = w.gr[a] * w.wz[b], Gz = w.wr[a] * w.gz[b];
+      L.rr += vr[i] * Gr;
+      L.rz += vr[i] * Gz;
+      L.zr += vz[i] * Gr;
+      L.zz += vz[i] * Gz;
+      L.tt += vr[i] * N;
     }
   }
   L.tt *= w.inverse_r;

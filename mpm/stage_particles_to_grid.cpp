@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <span>
 
-#include "mpm/pair.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
 
@@ -82,10 +81,10 @@ void scatter_internal_forces(Simulation& s) {
   });
 }
 
-/// add_mass_momentum and add_internal_force in one visit of the support: each
-/// node's five sums take the same terms, each formed by the same operations, in
-/// the same order as the two apart (bit for bit). Nodes a = 0, 1 of a support row
-/// are adjacent in every nodal array, so they go as one SSE2 pair (mpm/pair.hpp).
+/// add_mass_momentum and add_internal_force in one visit of the support, a
+/// support row per vector where the rows fit (mpm/support_row.hpp): each node's
+/// five sums take the same terms as the two apart, formed with the weights
+/// factored by rows (equal up to rounding).
 template <int S>
 inline void add_mass_momentum_force(const Simulation& s, std::size_t p, NodalField& f, StrainSmoothing smoothing,
                                     const std::vector<double>& limit) {
@@ -94,59 +93,43 @@ inline void add_mass_momentum_force(const Simulation& s, std::size_t p, NodalFie
   const double m = P.mass[p], pr = m * P.vr[p], pz = m * P.vz[p];
   const Voigt sig = particle_force_stress(s, p, smoothing, limit);
   const double V = P.volume[p], s_rr = sig[0], s_zz = sig[1], s_rz = sig[3], hoop = sig[2] * w.inverse_r;
-  if constexpr (S == 3) {
-    if (row_fits(s.grid, w)) {
-      // Row by row (mpm/support_row.hpp), with S_ip = s_r,a s_z,b and G_ip = (s_r,a' s_z,b,
-      // s_r,a s_z,b') factored: f_r,i = −V (σ_rr G_r + σ_rz G_z + σ_θθ S/r)
-      //   = s_z,b · [−V (σ_rr s_r' + σ_θθ s_r/r)] + s_z,b' · [−V σ_rz s_r], and so on.
-      const Row wr = load_row(w.wr), gr = load_row(w.gr);
-      const Row mass_r = m * wr, momentum_rr = pr * wr, momentum_zr = pz * wr;
-      const Row force_r_w = -V * (s_rr * gr + hoop * wr), force_r_g = -V * s_rz * wr;
-      const Row force_z_w = -V * s_rz * gr, force_z_g = -V * s_zz * wr;
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t i = s.grid.node(w.node_r, w.node_z + b);
-        const double wz = w.wz[b], gz = w.gz[b];
-        store_row(&f.mass[i], load_row(&f.mass[i]) + mass_r * wz);
-        store_row(&f.momentum_r[i], load_row(&f.momentum_r[i]) + momentum_rr * wz);
-        store_row(&f.momentum_z[i], load_row(&f.momentum_z[i]) + momentum_zr * wz);
-        store_row(&f.internal_force_r[i], load_row(&f.internal_force_r[i]) + (force_r_w * wz + force_r_g * gz));
-        store_row(&f.internal_force_z[i], load_row(&f.internal_force_z[i]) + (force_z_w * wz + force_z_g * gz));
-      }
-      return;
+  if (rows_fit<S>(s.grid, w)) {
+    // Row by row (mpm/support_row.hpp), with S_ip = s_r,a s_z,b and G_ip = (s_r,a' s_z,b,
+    // s_r,a s_z,b') factored: f_r,i = −V (σ_rr G_r + σ_rz G_z + σ_θθ S/r)
+    //   = s_z,b · [−V (σ_rr s_r' + σ_θθ s_r/r)] + s_z,b' · [−V σ_rz s_r], and so on.
+    using Vec = SupportRow<S>;
+    const Vec wr = load_support_row<S>(w.wr), gr = load_support_row<S>(w.gr);
+    const Vec mass_r = m * wr, momentum_rr = pr * wr, momentum_zr = pz * wr;
+    const Vec force_r_w = -V * (s_rr * gr + hoop * wr), force_r_g = -V * s_rz * wr;
+    const Vec force_z_w = -V * s_rz * gr, force_z_g = -V * s_zz * wr;
+    auto add = [](std::vector<double>& x, std::size_t i, Vec term) {
+      store_support_row<S>(&x[i], load_support_row<S>(&x[i]) + term);
+    };
+    for (int b = 0; b < S; ++b) {
+      const std::size_t i = s.grid.node(w.node_r, w.node_z + b);
+      const double wz = w.wz[b], gz = w.gz[b];
+      add(f.mass, i, mass_r * wz);
+      add(f.momentum_r, i, momentum_rr * wz);
+      add(f.momentum_z, i, momentum_zr * wz);
+      add(f.internal_force_r, i, force_r_w * wz + force_r_g * gz);
+      add(f.internal_force_z, i, force_z_w * wz + force_z_g * gz);
     }
+    return;
   }
-  double* __restrict mass = f.mass.data();
-  double* __restrict momentum_r = f.momentum_r.data();
-  double* __restrict momentum_z = f.momentum_z.data();
-  double* __restrict force_r = f.internal_force_r.data();
-  double* __restrict force_z = f.internal_force_z.data();
-  const Pair wr01 = pair(w.wr[0], w.wr[1]), gr01 = pair(w.gr[0], w.gr[1]);
-  for (int b = 0; b < S; ++b) {
-    const std::size_t i = s.grid.node(w.node_r, w.node_z + b);
-    const double wz = w.wz[b], gz = w.gz[b];
-    const Pair N = wr01 * wz, Gr = gr01 * wz, Gz = wr01 * gz;
-    store(mass + i, load(mass + i) + N * m);
-    store(momentum_r + i, load(momentum_r + i) + N * pr);
-    store(momentum_z + i, load(momentum_z + i) + N * pz);
-    store(force_r + i, load(force_r + i) - V * (s_rr * Gr + s_rz * Gz + hoop * N));
-    store(force_z + i, load(force_z + i) - V * (s_rz * Gr + s_zz * Gz));
-    if constexpr (S == 3) {
-      const std::size_t k = i + 2;
-      const double N2 = w.wr[2] * wz, Gr2 = w.gr[2] * wz, Gz2 = w.wr[2] * gz;
-      mass[k] += N2 * m;
-      momentum_r[k] += N2 * pr;
-      momentum_z[k] += N2 * pz;
-      force_r[k] -= V * (s_rr * Gr2 + s_rz * Gz2 + hoop * N2);
-      force_z[k] -= V * (s_rz * Gr2 + s_zz * Gz2);
-    }
-  }
+  for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {  // a GIMP edge particle
+    f.mass[i] += N * m;
+    f.momentum_r[i] += N * pr;
+    f.momentum_z[i] += N * pz;
+    f.internal_force_r[i] -= V * (s_rr * Gr + s_rz * Gz + hoop * N);
+    f.internal_force_z[i] -= V * (s_rz * Gr + s_zz * Gz);
+  });
 }
 
 /// map_particles_to_grid, smooth_mean_stress and compute_internal_forces in one
 /// pass over the particles, strip by strip: the strip's cell means (its cells are
 /// its own), then per particle its mass, momentum and internal-force terms. Every
 /// nodal sum and cell sum takes its terms in the same order as the three stages
-/// apart (ParticleBins order), so the results are the same bit for bit.
+/// apart (ParticleBins order); the nodal terms are formed row by row (above).
 template <int S>
 void scatter_mass_momentum_forces(Simulation& s) {
   const Particles& P = s.particles;

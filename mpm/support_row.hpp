@@ -9,8 +9,10 @@
 /// it lies inside the particle's strip neighbourhood (ParticleBins: strips two apart
 /// are at least two node columns apart), so no other thread writes it meanwhile.
 /// Where the row ends at the grid's last node column the fourth node would be
-/// the next row's first: such particles take the node-by-node path (row_fits).
+/// the next row's first: such particles take the node-by-node path (rows_fit).
+/// Linear hats have two nodes per row: a row is a Pair (128 bits).
 #include <cstring>
+#include <type_traits>
 
 #include "mpm/grid.hpp"
 #include "mpm/shape_functions.hpp"
@@ -18,15 +20,30 @@
 namespace ffp::mpm {
 
 using Row = double __attribute__((vector_size(32)));
-inline Row load_row(const double* x) {
-  Row v;
+using Pair = double __attribute__((vector_size(16)));
+/// x[0] + x[1] + x[2] (the fourth lane holds a zero-weight term).
+inline double row_sum(Row x) { return (x[0] + x[1]) + x[2]; }
+/// x[0] + x[1]: a linear support row is a Pair.
+inline double row_sum(Pair x) { return x[0] + x[1]; }
+
+/// The vector of one support row: S = 3 (GIMP) a Row, S = 2 (linear hats) a Pair.
+template <int S>
+using SupportRow = std::conditional_t<S == 3, Row, Pair>;
+template <int S>
+inline SupportRow<S> load_support_row(const double* x) {
+  SupportRow<S> v;
   std::memcpy(&v, x, sizeof v);
   return v;
 }
-inline void store_row(double* x, Row v) { std::memcpy(x, &v, sizeof v); }
-/// x[0] + x[1] + x[2] (the fourth lane holds a zero-weight term).
-inline double row_sum(Row x) { return (x[0] + x[1]) + x[2]; }
-/// The fourth node of every support row is a node of the same grid row.
-inline bool row_fits(const Grid& grid, const ShapeWeights& w) { return w.node_r + 3 < grid.r.nodes(); }
+template <int S>
+inline void store_support_row(double* x, SupportRow<S> v) {
+  std::memcpy(x, &v, sizeof v);
+}
+/// The support's rows go as vectors: always for linear hats; for GIMP unless the
+/// fourth node of a row would be the next grid row's first (see above).
+template <int S>
+inline bool rows_fit(const Grid& grid, const ShapeWeights& w) {
+  return S == 2 || w.node_r + 3 < grid.r.nodes();
+}
 
 }  // namespace ffp::mpm
