@@ -57,12 +57,14 @@ inline Weights1D gimp_weights(const GridAxis& axis, double x, double half_length
   const double inverse_h0 = axis.inverse_spacing(base), inverse_h1 = axis.inverse_spacing(base + 1);
   const double l = std::min(half_length, std::min(x - x0, x2 - x));
   if (!(l > 1e-9 * (x2 - x0))) {  // point particle (or on the grid edge): linear hats
-    const Weights1D lin = linear_weights(axis, x, x < x1 ? base : base + 1);
-    const int shift = lin.base - base;
-    for (int k = 0; k < 2; ++k) {
-      out.w[k + shift] = lin.w[k];
-      out.g[k + shift] = lin.g[k];
-    }
+    // (each entry by a fixed index, so that the weights can stay in registers)
+    const bool left = x < x1;
+    out.w[0] = left ? (x1 - x) * inverse_h0 : 0.0;
+    out.w[1] = left ? (x - x0) * inverse_h0 : (x2 - x) * inverse_h1;
+    out.w[2] = left ? 0.0 : (x - x1) * inverse_h1;
+    out.g[0] = left ? -inverse_h0 : 0.0;
+    out.g[1] = left ? inverse_h0 : -inverse_h1;
+    out.g[2] = left ? 0.0 : inverse_h1;
     return out;
   }
   const double a = x - l, b = x + l, inverse_length = 0.5 / l;
