@@ -38,6 +38,15 @@ class GridAxis {
     return c;
   }
 
+  /// cell_of(x), trying `hint` first: a particle's cell of the previous step,
+  /// which holds it again in most steps (a particle moves less than a cell).
+  int cell_near(double x, int hint) const {
+    if (hint >= 0 && hint < cells() && x >= x_[static_cast<std::size_t>(hint)] &&
+        x < x_[static_cast<std::size_t>(hint) + 1])
+      return hint;
+    return cell_of(x);
+  }
+
   /// ∫_a^b N_node(x) dx of the node's hat function (exact, any spacing).
   double hat_integral(int node, double a, double b) const;
 

@@ -8,6 +8,9 @@ namespace ffp::mpm {
 void compute_shape_functions(Simulation& s) {
   const Particles& p = s.particles;
   const std::size_t n = p.size();
+  // The previous step's cells, where they are this step's particles', as hints.
+  const bool hinted = s.cell.size() == n;
+  const auto cells_r = static_cast<std::uint32_t>(s.grid.r.cells());
   s.weights.resize(n);
   s.strip.resize(n);
   s.cell.resize(n);
@@ -24,7 +27,9 @@ void compute_shape_functions(Simulation& s) {
     std::uint32_t* strip_count = s.bins.counts(t);
     for (std::size_t i = first; i < last; ++i) {
       const double r = p.r[i], z = p.z[i];
-      const int cr = axis_r.cell_of(r), cz = axis_z.cell_of(z);
+      const std::uint32_t previous = hinted ? s.cell[i] : 0;
+      const int cr = axis_r.cell_near(r, static_cast<int>(previous % cells_r));
+      const int cz = axis_z.cell_near(z, static_cast<int>(previous / cells_r));
       if (cr < 0 || cz < 0) {
         ++outside;
         continue;

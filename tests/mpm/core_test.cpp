@@ -23,6 +23,9 @@ TEST_CASE("grid axis finds the cell of a coordinate on a graded, moving axis", "
   CHECK(axis.cell_of(1.0) == 4);
   CHECK(axis.cell_of(-1e-9) == -1);
   CHECK(axis.cell_of(1.0 + 1e-9) == -1);
+  // A hint (the particle's previous cell) gives the same cell, right or wrong.
+  for (const double x : {0.0, 0.1, 0.12, 0.16, 0.17, 0.5, 1.0, -1e-9, 1.0 + 1e-9})
+    for (const int hint : {-1, 0, 1, 2, 3, 4, 5, 99}) CHECK(axis.cell_near(x, hint) == axis.cell_of(x));
   const std::vector<double> moved = {0.0, 0.05, 0.1, 0.5, 0.6, 1.0};
   axis.set_coordinates(moved);
   CHECK(axis.cell_of(0.16) == 2);
