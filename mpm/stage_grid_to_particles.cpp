@@ -45,6 +45,17 @@ void update_particles_impl(Simulation& s) {
   const Walls& walls = s.walls;
   const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
   std::atomic<long> clamps{0};            // rare (should stay 0): an atomic costs nothing here
+  // v_p ← α (v_p + Σ S Δv_i) + (1 − α) Σ S v_i^{n+1}, and x_p ← x_p + Δt Σ S v_i^{n+1} (Move),
+  // from the particle's gathered sums v = Σ S v_i^{n+1} and dv = Σ S (v_i^{n+1} − v_i^n).
+  auto blend_and_move = [&](std::size_t p, double v_r, double v_z, double dv_r, double dv_z) {
+    P.vr[p] = alpha * (P.vr[p] + dv_r) + (1.0 - alpha) * v_r;
+    P.vz[p] = alpha * (P.vz[p] + dv_z) + (1.0 - alpha) * v_z;
+    if constexpr (Move) {
+      long clamped = 0;
+      move_within_walls(P, p, P.r[p] + dt * v_r, P.z[p] + dt * v_z, walls, clamped);
+      if (clamped) clamps += clamped;
+    }
+  };
   // A particle whose support rows go as vectors (mpm/support_row.hpp): a row of nodes per vector.
   using Vec = SupportRow<S>;
   auto update_by_rows = [&](std::size_t p, NodalField& f, const ShapeWeights& w) {
@@ -65,14 +76,7 @@ void update_particles_impl(Simulation& s) {
         dvr += N[b] * (new_r - load_support_row<S>(&f.velocity_r[i]));
         dvz += N[b] * (new_z - load_support_row<S>(&f.velocity_z[i]));
       }
-      const double v_r = row_sum(vr), v_z = row_sum(vz);
-      P.vr[p] = alpha * (P.vr[p] + row_sum(dvr)) + (1.0 - alpha) * v_r;
-      P.vz[p] = alpha * (P.vz[p] + row_sum(dvz)) + (1.0 - alpha) * v_z;
-      if constexpr (Move) {
-        long clamped = 0;
-        move_within_walls(P, p, P.r[p] + dt * v_r, P.z[p] + dt * v_z, walls, clamped);
-        if (clamped) clamps += clamped;
-      }
+      blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
@@ -96,13 +100,7 @@ void update_particles_impl(Simulation& s) {
         dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
         dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
       });
-      P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
-      P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
-      if constexpr (Move) {
-        long clamped = 0;
-        move_within_walls(P, p, P.r[p] + dt * vr, P.z[p] + dt * vz, walls, clamped);
-        if (clamped) clamps += clamped;
-      }
+      blend_and_move(p, vr, vz, dvr, dvz);
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
