@@ -128,8 +128,9 @@ CalibrationScene read_calibration_scene(SceneReader& scene, const fs::path& scen
       scene.fail("scan", "'bracket' brackets W_lab: it needs mode dissipated_work");
     if (scene.has("scan_points")) scene.fail("scan_points", "belongs to scan 'bounds' (the bracket widens as needed)");
     spec.settings.bracket_start_eta = spec.eta_start;
+  } else {  // read only where it applies, so that the echoed scene runs again as it is
+    spec.settings.scan_points = scene.integer("scan_points", 2, 1000, mpm_specimen ? 3 : 9);
   }
-  spec.settings.scan_points = scene.integer("scan_points", 2, 1000, mpm_specimen ? 3 : 9);
   spec.fit_start = scene.choice("fit_start", kFitStartNames, mpm_specimen ? FitStart::scan : FitStart::material_eta);
   if (spec.fit_start == FitStart::material_eta) spec.settings.eta_start = spec.eta_start;
   spec.settings.scan_extra_eta = spec.compare_eta;

@@ -204,9 +204,13 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
     // A stiff deformable penetrometer may take its own substeps inside the soil's step
     // (mpm/body_subcycle.hpp). Off by default: at the soil's CFL step the contact gives a steel
     // FFP 7 % less penetration at 2 cm than the single step (as it does a rigid one).
-    d.subcycle = solver.choice("subcycle", mpm::kSubcycleNames, mpm::Subcycle::off);
-    if (solver.has("subcycle") && !d.deformable)
+    // Read only with a deformable body, so that a rigid run's echoed scene carries no subcycle
+    // key and runs again as it is.
+    if (d.deformable) {
+      d.subcycle = solver.choice("subcycle", mpm::kSubcycleNames, mpm::Subcycle::off);
+    } else if (solver.has("subcycle")) {
       solver.fail("subcycle", "applies to a deformable penetrometer (ffp.deformable) only");
+    }
     solver.finish("solver (shape_function, transfer, flip_fraction, pic_blend, courant, strain_smoothing, subcycle)");
   }
 }
