@@ -112,34 +112,49 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     state.strain_rate_per_s =
         parameters_.rate.smoothed_rate(state.strain_rate_per_s, deviatoric_strain(strain_increment) / dt_s);
   // Most points of an MPM step are well inside the surface: screened without exp or
-  // trigonometry, and (θθ principal) without the principal-space object (ElasticTrial).
+  // trigonometry, and (θθ principal) without the principal-space object (ElasticTrial),
+  // on whose scalar principal values a yielding planar point also returns (the same
+  // bits as PrincipalStresses, as in MohrCoulomb's batch).
   const double peak_friction = peak_friction_rad(state);
-  if (const ElasticTrial quick(stress, strain_increment, elastic_stiffness_);
-      quick.planar && surely_elastic(quick.major, quick.minor, peak_friction, state.plastic_deviatoric_strain)) {
-    quick.store(stress);
-    return ReturnRegion::elastic;
+  const double mean_pressure_start = mean_pressure(stress);
+  if (const ElasticTrial quick(stress, strain_increment, elastic_stiffness_); quick.planar) {
+    if (surely_elastic(quick.major, quick.minor, peak_friction, state.plastic_deviatoric_strain)) {
+      quick.store(stress);
+      return ReturnRegion::elastic;
+    }
+    Eigen::Vector3d returned;
+    const ReturnRegion region = plastic_return(quick.values(), peak_friction, mean_pressure_start, state, returned);
+    if (region == ReturnRegion::elastic) {
+      quick.store(stress);
+    } else {
+      quick.store_with_values(returned, stress);
+    }
+    return region;
   }
   const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
-  const Eigen::Vector3d& trial_values = principal.values();
-  if (!principal.planar() &&
-      surely_elastic(trial_values[0], trial_values[2], peak_friction, state.plastic_deviatoric_strain)) {
+  if (surely_elastic(principal.values()[0], principal.values()[2], peak_friction, state.plastic_deviatoric_strain)) {
     stress = trial;
     return ReturnRegion::elastic;
   }
-  const Peaks pk{peak_friction, peak_dilatancy_rad(mean_pressure(stress))};
+  Eigen::Vector3d returned;
+  const ReturnRegion region = plastic_return(principal.values(), peak_friction, mean_pressure_start, state, returned);
+  stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
+  return region;
+}
+
+ReturnRegion StrainSofteningMohrCoulomb::plastic_return(const Eigen::Vector3d& trial_values, double peak_friction_rad,
+                                                        double mean_pressure_Pa, State& state,
+                                                        Eigen::Vector3d& returned) const {
+  const Peaks pk{peak_friction_rad, peak_dilatancy_rad(mean_pressure_Pa)};
   const double eta = parameters_.softening_factor;
   const double decay_start = std::exp(-eta * state.plastic_deviatoric_strain);
   const MohrCoulombStrength strength_start = strength(pk, decay_start);
-  if (!(strength_start.yield(trial_values) > 0.0)) {
-    stress = trial;
-    return ReturnRegion::elastic;
-  }
+  if (!(strength_start.yield(trial_values) > 0.0)) return ReturnRegion::elastic;
 
   // g(Δκ): plastic deviatoric strain of the return with the strength at κ_n + Δκ.
   // The plastic strain is coaxial with the trial: Δε^p = D⁻¹(σ_tr − σ), so its
   // deviatoric norm is √(2/3) |dev(σ_tr − σ)| / 2G.
-  Eigen::Vector3d returned;
   ReturnRegion region = ReturnRegion::elastic;
   auto plastic_strain = [&](const MohrCoulombStrength& s) {
     returned = trial_values;
@@ -201,7 +216,6 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
   }
   state.plastic_deviatoric_strain += accepted;
   // `returned` and `region` are those of the last evaluation, at the accepted Δκ.
-  stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
   return region;
 }
 

@@ -87,6 +87,11 @@ class StrainSofteningMohrCoulomb {
   /// True only where the trial is certainly inside the surface at the current
   /// strength: the yield test with a lower bound on sin φ' that needs no trigonometry.
   bool surely_elastic(double major, double minor, double peak_friction_rad, double plastic_deviatoric_strain) const;
+  /// The return of a trial (principal values, descending) that the screen did not pass: the
+  /// implicit Δκ, added to the state; `returned` holds the returned principal values unless
+  /// the result is elastic.
+  ReturnRegion plastic_return(const Eigen::Vector3d& trial_values, double peak_friction_rad, double mean_pressure_Pa,
+                              State& state, Eigen::Vector3d& returned) const;
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;
