@@ -116,14 +116,13 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
   // on whose scalar principal values a yielding planar point also returns (the same
   // bits as PrincipalStresses, as in MohrCoulomb's batch).
   const double peak_friction = peak_friction_rad(state);
-  const double mean_pressure_start = mean_pressure(stress);
   if (const ElasticTrial quick(stress, strain_increment, elastic_stiffness_); quick.planar) {
     if (surely_elastic(quick.major, quick.minor, peak_friction, state.plastic_deviatoric_strain)) {
       quick.store(stress);
       return ReturnRegion::elastic;
     }
     Eigen::Vector3d returned;
-    const ReturnRegion region = plastic_return(quick.values(), peak_friction, mean_pressure_start, state, returned);
+    const ReturnRegion region = plastic_return(quick.values(), peak_friction, mean_pressure(stress), state, returned);
     if (region == ReturnRegion::elastic) {
       quick.store(stress);
     } else {
@@ -138,7 +137,7 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     return ReturnRegion::elastic;
   }
   Eigen::Vector3d returned;
-  const ReturnRegion region = plastic_return(principal.values(), peak_friction, mean_pressure_start, state, returned);
+  const ReturnRegion region = plastic_return(principal.values(), peak_friction, mean_pressure(stress), state, returned);
   stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
   return region;
 }

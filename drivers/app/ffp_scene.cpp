@@ -202,8 +202,8 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
     if (solver.has("local_damping"))
       solver.fail("local_damping", "the FFP impact is dynamic: no artificial damping (paper section 4)");
     // A stiff deformable penetrometer may take its own substeps inside the soil's step
-    // (mpm/body_subcycle.hpp). Off by default: at the soil's CFL step the contact gives a steel
-    // FFP 7 % less penetration at 2 cm than the single step (as it does a rigid one).
+    // (mpm/body_subcycle.hpp). Off by default: the single step is the reference the subcycled
+    // run is measured against (README, solver.subcycle).
     // Read only with a deformable body, so that a rigid run's echoed scene carries no subcycle
     // key and runs again as it is.
     if (d.deformable) {
