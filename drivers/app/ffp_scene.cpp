@@ -202,10 +202,8 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
     if (solver.has("local_damping"))
       solver.fail("local_damping", "the FFP impact is dynamic: no artificial damping (paper section 4)");
     // A stiff deformable penetrometer may take its own substeps inside the soil's step
-    // (mpm/body_subcycle.hpp). Off by default: the single step is the reference the subcycled
-    // run is measured against (README, solver.subcycle).
-    // Read only with a deformable body, so that a rigid run's echoed scene carries no subcycle
-    // key and runs again as it is.
+    // (mpm/body_subcycle.hpp); off by default (README, solver.subcycle). Read only with a
+    // deformable body, so that a rigid run's echoed scene has no subcycle key and runs again.
     if (d.deformable) {
       d.subcycle = solver.choice("subcycle", mpm::kSubcycleNames, mpm::Subcycle::off);
     } else if (solver.has("subcycle")) {
