@@ -15,7 +15,7 @@ void ParticleBins::build(std::span<const std::uint32_t> strip) {
   begin_build(n);
   FFP_OMP(omp parallel for schedule(static, 1) if (n >= kParallelMinimum))
   for (int t = 0; t < chunks_; ++t) {
-    const auto [first, last] = chunk_range(t, n);
+    const auto [first, last] = chunk_range(t);
     std::uint32_t* count = counts(t);
     for (std::size_t p = first; p < last; ++p) ++count[strip[p]];
   }
@@ -77,7 +77,7 @@ void ParticleBins::finish_build(std::span<const std::uint32_t> strip) {
   offsets[strips_count] = running;
   FFP_OMP(omp parallel for schedule(static, 1) if (n >= kParallelMinimum))
   for (int t = 0; t < chunks_; ++t) {
-    const auto [first, last] = chunk_range(t, n);
+    const auto [first, last] = chunk_range(t);
     std::uint32_t* next = counts(t);
     for (std::size_t p = first; p < last; ++p) order[next[strip[p]]++] = static_cast<std::uint32_t>(p);
   }

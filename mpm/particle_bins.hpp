@@ -46,16 +46,14 @@ struct ParticleBins {
 
   /// The same sort in two halves, for a caller that counts the strips while it
   /// computes them (one parallel pass fewer): begin_build(n), then for each chunk
-  /// t < chunks(), ++counts(t)[strip] over the particles of chunk_range(t, n)
+  /// t < chunks(), ++counts(t)[strip] over the particles of chunk_range(t)
   /// (chunks may run in parallel), then finish_build(strips).
   void begin_build(std::size_t n);
   int chunks() const { return chunks_; }
   /// The particles of chunk t: the part t of the last build (particle_range), so
-  /// that the thread that counts them has them in cache.
-  std::pair<std::size_t, std::size_t> chunk_range(int t, std::size_t n) const {
-    (void)n;
-    return particle_range(t);
-  }
+  /// that the thread that counts them has them in cache; begin_build(n) made the
+  /// parts cover [0, n).
+  std::pair<std::size_t, std::size_t> chunk_range(int t) const { return particle_range(t); }
   std::uint32_t* counts(int t) { return counts_.data() + static_cast<std::size_t>(t) * offsets.size(); }
   void finish_build(std::span<const std::uint32_t> strip_of_particle);
 

@@ -88,7 +88,7 @@ void compute_shape_functions(Simulation& s) {
   const int chunks = s.bins.chunks();
   FFP_OMP(omp parallel for schedule(static, 1) reduction(+ : outside) if (n >= kParallelMinimum))
   for (int t = 0; t < chunks; ++t) {
-    const auto [first, last] = s.bins.chunk_range(t, n);
+    const auto [first, last] = s.bins.chunk_range(t);
     std::uint32_t* strip_count = s.bins.counts(t);
     outside += gimp ? shape_functions_of<true>(s, first, last, hinted, strip_count)
                     : shape_functions_of<false>(s, first, last, hinted, strip_count);

@@ -8,7 +8,8 @@ preset=release
 if [ "${1:-}" = "--sanitize" ]; then preset=asan; fi
 
 bash scripts/setup.sh
-cmake --preset "$preset" >/dev/null
+# The tests build the libraries one file at a time, as CI does, even after main.sh's unity build.
+cmake --preset "$preset" -DFFP_UNITY_BUILD=OFF >/dev/null
 cmake --build --preset "$preset"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"

@@ -57,9 +57,12 @@ inline std::string quoted(const std::string& word) {
 /// slower); the results do not depend on the thread count (mpm/parallel.hpp).
 inline ProgramResult run_program(const std::vector<std::string>& args, const std::filesystem::path& scratch) {
   const std::filesystem::path err = scratch / "stderr.txt", out = scratch / "stdout.txt";
-  std::string command = "OMP_NUM_THREADS=1 " + quoted(FFP_BINARY);
-  for (const std::string& a : args) command += " " + quoted(a);
-  command += " > " + quoted(out.string()) + " 2> " + quoted(err.string());
+  // Appended, not "literal" + std::string&&: GCC 12 warns falsely on that (-Wstringop-overflow, GCC bug 105329).
+  std::string command = "OMP_NUM_THREADS=1 ";
+  command += quoted(FFP_BINARY);
+  for (const std::string& a : args) (command += ' ') += quoted(a);
+  ((command += " > ") += quoted(out.string())) += " 2> ";
+  command += quoted(err.string());
   const int status = std::system(command.c_str());
   ProgramResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -75,7 +78,11 @@ inline ProgramResult run_program(const std::vector<std::string>& args, const std
   return r;
 }
 
-inline std::string scene_path(const std::string& name) { return std::string(FFP_SOURCE_DIR) + "/data/scenes/" + name; }
+inline std::string scene_path(const std::string& name) {
+  std::string path = FFP_SOURCE_DIR;
+  (path += "/data/scenes/") += name;  // appended: see run_program
+  return path;
+}
 
 inline nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
