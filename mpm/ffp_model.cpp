@@ -63,6 +63,7 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   need(m.min_compressed_cell_m >= 0.0 && m.min_compressed_cell_m <= m.below_cell_m,
        "mesh: need 0 ≤ min_compressed_cell ≤ below_cell");
   need(m.tip_offset_cells >= 0.0 && m.tip_offset_cells < 1.0, "mesh: tip_offset_cells must be in [0, 1)");
+  need(m.edge_offset_cells >= 0.0 && m.edge_offset_cells < 1.0, "mesh: edge_offset_cells must be in [0, 1)");
   need(R > 0.0 && R + h <= d.soil.radius_m, "the penetrometer's base radius plus a cell must fit inside the chamber");
   need(m.fine_radius_m > R, "mesh: fine_radius must exceed the penetrometer's base radius");
   need(m.band_below_m > 0.0 && m.band_below_m + 2.0 * h < d.soil.depth_m,
@@ -71,14 +72,26 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   need(d.shape.total_length_m() >= 3.0 * h, "the penetrometer must be at least three min cells long");
 
   FfpGridLayout g;
-  // Radial: uniform cells no smaller than h on [0, R] and [R, fine], a node exactly at R.
+  // Radial: uniform cells no smaller than h on [0, R] and [R, fine], a node exactly at R;
+  // or, with an edge offset o, n + o cells of R/(n + o) over [0, R] and the same cells on
+  // to the first node at or past `fine` (R then lies o cells past the last column inside it).
   g.r_nodes_m = {0.0};
-  append_uniform(g.r_nodes_m, R, cells_in(R, h));
   double fine = std::min(m.fine_radius_m, d.soil.radius_m);
   if (d.soil.radius_m - fine < 2.0 * h) fine = d.soil.radius_m;  // no sliver of graded cells
-  const int n_fine = cells_in(fine - R, h);
-  append_uniform(g.r_nodes_m, fine, n_fine);
-  const double fine_cell = (fine - R) / n_fine;
+  double fine_cell = 0.0;
+  if (m.edge_offset_cells > 0.0) {
+    const int inside = std::max(1, static_cast<int>(std::floor(R / h - m.edge_offset_cells + 1e-9)));
+    fine_cell = R / (inside + m.edge_offset_cells);
+    const int cells = static_cast<int>(std::ceil(fine / fine_cell - 1e-9));
+    need(cells * fine_cell <= d.soil.radius_m * (1.0 + 1e-12), "mesh: edge_offset_cells leaves no room in the chamber");
+    fine = cells * fine_cell;
+    append_uniform(g.r_nodes_m, fine, cells);
+  } else {
+    append_uniform(g.r_nodes_m, R, cells_in(R, h));
+    const int n_fine = cells_in(fine - R, h);
+    append_uniform(g.r_nodes_m, fine, n_fine);
+    fine_cell = (fine - R) / n_fine;
+  }
   append_graded(g.r_nodes_m, d.soil.radius_m, fine_cell * m.growth, std::max(m.max_cell_m, fine_cell), m.growth,
                 fine_cell);
 

@@ -62,6 +62,10 @@ struct FfpMesh {
   double air_above_m = 0.1;             ///< stretching zone above the penetrometer's top
   double growth = 1.2;                  ///< largest ratio of neighbouring cells in graded zones
   double tip_offset_cells = 0.0;        ///< the band's node rows this many cells above the tip's (0: the tip on a row)
+  /// The base radius R lies this many radial cells past the last node column at or inside it
+  /// (0: a column on R; 0.5: R midway between two, so that the columns inside the base have
+  /// tributary widths that tile [0, R] exactly). The radial cells then measure R/(n + offset).
+  double edge_offset_cells = 0.0;
 };
 
 struct DeformableFfp {

@@ -170,6 +170,7 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   mesh.air_above_m = m.number("air_above_m", Range::positive(kMaxLength_m, "m"), 0.1);
   mesh.growth = m.number("growth", Range{1.0, 2.0, true, false, ""}, 1.2);
   mesh.tip_offset_cells = m.number("tip_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0);
+  mesh.edge_offset_cells = m.number("edge_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0);
   if (d.soil.near_spacing_m && *d.soil.near_spacing_m > h)
     scene.fail("soil.near_spacing_m",
                "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
@@ -179,7 +180,7 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
     m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
   m.finish(
       "mesh (min_cell_m, max_cell_m, below_cell_m, min_compressed_cell_m, fine_radius_m, band_below_m, fine_above_m, "
-      "air_above_m, growth, tip_offset_cells)");
+      "air_above_m, growth, tip_offset_cells, edge_offset_cells)");
 }
 
 void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind kind) {

@@ -108,6 +108,37 @@ TEST_CASE("FFP grid: tip_offset_cells puts the tip that far between two node row
   CHECK_THROWS_AS(ffp_grid_layout(d), std::invalid_argument);
 }
 
+TEST_CASE("FFP grid: edge_offset_cells puts the base radius that far past the last node column inside it",
+          "[ffp][moving_mesh]") {
+  FfpDescription d;
+  const double R = d.shape.base_radius_m;
+  for (const double h : {0.02, 0.01, R / 10.5}) {
+    d.mesh.min_cell_m = h;
+    d.mesh.max_cell_m = 3 * h;
+    d.mesh.below_cell_m = 2 * h;
+    d.mesh.min_compressed_cell_m = h;
+    d.mesh.edge_offset_cells = 0.5;
+    const FfpGridLayout g = ffp_grid_layout(d);
+    // The last column at or inside R, and the radial cell there.
+    const auto past = std::upper_bound(g.r_nodes_m.begin(), g.r_nodes_m.end(), R);
+    REQUIRE(past != g.r_nodes_m.end());
+    const double inside = *(past - 1), cell = *past - inside;
+    INFO("min_cell_m = " << h << ": last column inside at " << inside << " m, cell " << cell << " m");
+    CHECK(R - inside == Approx(0.5 * cell).epsilon(1e-9));  // R midway between two columns
+    CHECK(cell >= h * (1.0 - 1e-12));                       // no cell below min_cell_m ...
+    const double columns = std::round(inside / cell);
+    CHECK((columns + 1.5) * h > R);  // ... and the most columns that allows
+    // Uniform from the axis to the fine radius.
+    for (std::size_t i = 1; i < g.r_nodes_m.size() && g.r_nodes_m[i] <= d.mesh.fine_radius_m; ++i)
+      CHECK(g.r_nodes_m[i] - g.r_nodes_m[i - 1] == Approx(cell).epsilon(1e-9));
+  }
+  // At min_cell_m = R/(n + ½) (the loop's last) the cells are min_cell_m itself.
+  const FfpGridLayout g = ffp_grid_layout(d);
+  CHECK(g.r_nodes_m[1] == Approx(d.mesh.min_cell_m).epsilon(1e-12));
+  d.mesh.edge_offset_cells = 1.0;
+  CHECK_THROWS_AS(ffp_grid_layout(d), std::invalid_argument);
+}
+
 TEST_CASE("FFP run: the moving band follows the rigid penetrometer and no particle leaves the grid",
           "[ffp][moving_mesh]") {
   FfpDescription d;
