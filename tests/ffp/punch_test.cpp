@@ -2,8 +2,8 @@
 /// on a weightless Tresca soil, exact limit mean pressure 5.69 c' (smooth,
 /// Shield 1955) and 6.05 c' (rough, Eason & Shield 1960), read as the plateau
 /// at a settlement small enough to be the small-strain answer. The report's
-/// verification study runs them at R/h = 2.5, 5.5, 10.5 and 20.5 (the scenes'
-/// own); here the two coarse levels (about 1 s each).
+/// verification study runs them at R/h = 1.5, 3.5, 7.5 and 15.5 (the scenes'
+/// own); here R/h = 2.5 and 5.5 (about 1 s each).
 #include <catch2/catch.hpp>
 
 #include <cmath>
