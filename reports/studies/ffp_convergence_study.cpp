@@ -142,6 +142,9 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     std::vector<std::vector<std::string>> controls, phases;
     std::vector<double> phase_depth(kControlLevels), phase_peak(kControlLevels);
     std::vector<double> depth_range(kControlLevels), peak_range(kControlLevels);
+    // The figure: every phase as a point at its level's cell size, the phase means as a line.
+    Series depth_phases{{}, {}, "final penetration, each phase", "points"},
+        peak_phases{{}, {}, "2 ms peak, each phase", "points"};
     for (std::size_t l = 0; l < kControlLevels; ++l) {
       const std::size_t flip = n + kRunsPerControlLevel * l;
       const double ke = last(results.history(l), "soil_kinetic_energy_J");
@@ -164,6 +167,12 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
         return *hi - *lo;
       };
+      for (std::size_t k = 0; k < z.size(); ++k) {
+        depth_phases.x.push_back(100 * kReferenceCells_m[l]);
+        depth_phases.y.push_back(100 * z[k]);
+        peak_phases.x.push_back(100 * kReferenceCells_m[l]);
+        peak_phases.y.push_back(g[k]);
+      }
       phase_depth[l] = mean(z);
       phase_peak[l] = mean(g);
       depth_range[l] = spread(z);
@@ -188,6 +197,44 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     md.table({"min cell [cm]", "z_f at 0 [cm]", "0.25", "0.5", "0.75", "mean [cm]", "range [%]", "bias at 0.5 [%]",
               "2 ms peak at 0 [g]", "0.25", "0.5", "0.75", "mean [g]", "range [%]"},
              phases);
+    {
+      Series depth_mean{{}, {}, "mean of the phases", "linespoints"},
+          peak_mean{{}, {}, "mean of the phases", "linespoints"};
+      Series depth_row{{}, {}, "tip on a row, every level", "lines dashtype 2"},
+          peak_row{{}, {}, "tip on a row, every level", "lines dashtype 2"};
+      for (std::size_t l = 0; l < kControlLevels; ++l) {
+        depth_mean.x.push_back(100 * kReferenceCells_m[l]);
+        depth_mean.y.push_back(100 * phase_depth[l]);
+        peak_mean.x.push_back(100 * kReferenceCells_m[l]);
+        peak_mean.y.push_back(phase_peak[l]);
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        depth_row.x.push_back(100 * kReferenceCells_m[i]);
+        depth_row.y.push_back(100 * depth[i]);
+        peak_row.x.push_back(100 * kReferenceCells_m[i]);
+        peak_row.y.push_back(peak[i]);
+      }
+      const Plot depth_plot{"Final penetration against the cell size, four tip phases per level",
+                            "min cell (cm)",
+                            "final penetration (cm)",
+                            {depth_phases, depth_mean, depth_row},
+                            true,
+                            false,
+                            false,
+                            "top right"};
+      const Plot peak_plot{"2 ms peak deceleration against the cell size",
+                           "min cell (cm)",
+                           "2 ms peak (g)",
+                           {peak_phases, peak_mean, peak_row},
+                           true,
+                           false,
+                           false,
+                           "top left"};
+      if (write_png_stack({depth_plot, peak_plot}, out.figures_dir / "convergence_tip_phases.png"))
+        md.figure(out.figures_relative + "/convergence_tip_phases.png",
+                  "Each tip phase's final penetration and 2 ms peak at its level (points), their means (line) and "
+                  "the tip-on-a-row series of every level (dashed).");
+    }
     auto steps = [](const std::vector<double>& q, double scale) {
       std::string text;
       for (std::size_t i = 1; i < q.size(); ++i) text += (i > 1 ? ", " : "") + fixed(scale * (q[i] - q[i - 1]), 2);
