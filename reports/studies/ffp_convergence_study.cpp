@@ -251,12 +251,12 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
                  steps(phase_depth, 100.0) + " cm), 2 ms peak " + fixed(phase_peak[0], 2) + " / " +
                  fixed(phase_peak[1], 2) + " / " + fixed(phase_peak[2], 2) + " g (steps " + steps(phase_peak, 1.0) +
                  " g). The step from 0.5 to 0.25 cm, " + fixed(100 * last_depth_step, 2) +
-                 " cm in the final "
-                 "penetration and " +
-                 fixed(last_peak_step, 2) + " g in the peak, is " + within(last_depth_step, depth_range[2]) +
-                 " at 0.5 cm (" + fixed(100 * depth_range[2], 2) + " cm) and " + within(last_peak_step, peak_range[2]) +
-                 " (" + fixed(peak_range[2], 2) +
-                 " g), so the Richardson figures below rest on single samples of the staircase.");
+                 " cm in the final penetration and " + fixed(last_peak_step, 2) + " g in the peak, is " +
+                 within(last_depth_step, depth_range[2]) + " at 0.5 cm (" + fixed(100 * depth_range[2], 2) +
+                 " cm) and " + within(last_peak_step, peak_range[2]) + " (" + fixed(peak_range[2], 2) + " g)" +
+                 (std::abs(last_depth_step) < depth_range[2] || std::abs(last_peak_step) < peak_range[2]
+                      ? ", so the Richardson figures below rest on single samples of the staircase."
+                      : "."));
     auto describe = [](const char* what, const Extrapolation& e, double scale, const char* unit) {
       return std::string(what) + ": reference " + fixed(scale * e.value, 2) + " " + unit +
              (std::isfinite(e.order) ? " (Richardson, observed order " + fixed(e.order, 2) + ")"
