@@ -4,6 +4,7 @@
 /// fails); the run's health per level; pure FLIP as a control, and the tip at four
 /// phases between two node rows (the staircase of the non-conforming cone).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "reports/studies/ffp_figures.hpp"
@@ -23,8 +24,22 @@ const std::string kPicPerSecond = "solver.pic_blend=per_second";
 constexpr std::size_t kControlLevels = 3;
 // The tip's phases between two node rows besides the level's own 0 (mesh.tip_offset_cells); 0.5 is
 // the "half a cell off". The four phases sample the staircase the moving mesh freezes.
-const std::vector<double> kTipPhases = {0.25, 0.5, 0.75};
-constexpr std::size_t kRunsPerControlLevel = 1 + 3;  // pure FLIP and the three phases
+constexpr std::array<double, 3> kTipPhases = {0.25, 0.5, 0.75};
+constexpr std::size_t kRunsPerControlLevel = 1 + kTipPhases.size();  // pure FLIP and the phases
+// Where half a cell off sits among a level's phases (0 first, then kTipPhases).
+constexpr std::size_t kHalfCellPhase = 2;
+static_assert(kTipPhases[kHalfCellPhase - 1] == 0.5);
+
+double phase_mean(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x;
+  return sum / static_cast<double>(v.size());
+}
+
+double phase_spread(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi - *lo;
+}
 
 /// A level's expected wall time: particles grow as h⁻² and steps as h⁻¹; 1 cm takes about 5 s on one core.
 double level_wall_s(double h) { return 5.0 * std::pow(0.01 / h, 3); }
@@ -69,7 +84,6 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       study.runs.back().expected_wall_s = level_wall_s(h);
     }
   }
-  static_assert(kRunsPerControlLevel == 4);
   study.write = [](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
     md.paragraph(
@@ -158,30 +172,21 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         z.push_back(figure(results, flip + 1 + k, "final_penetration_m"));
         g.push_back(figure(results, flip + 1 + k, "peak_deceleration_2ms_g"));
       }
-      auto mean = [](const std::vector<double>& v) {
-        double sum = 0;
-        for (double x : v) sum += x;
-        return sum / static_cast<double>(v.size());
-      };
-      auto spread = [](const std::vector<double>& v) {
-        const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-        return *hi - *lo;
-      };
       for (std::size_t k = 0; k < z.size(); ++k) {
         depth_phases.x.push_back(100 * kReferenceCells_m[l]);
         depth_phases.y.push_back(100 * z[k]);
         peak_phases.x.push_back(100 * kReferenceCells_m[l]);
         peak_phases.y.push_back(g[k]);
       }
-      phase_depth[l] = mean(z);
-      phase_peak[l] = mean(g);
-      depth_range[l] = spread(z);
-      peak_range[l] = spread(g);
+      phase_depth[l] = phase_mean(z);
+      phase_peak[l] = phase_mean(g);
+      depth_range[l] = phase_spread(z);
+      peak_range[l] = phase_spread(g);
       std::vector<std::string> row{fixed(100 * kReferenceCells_m[l], 2)};
       for (double x : z) row.push_back(fixed(100 * x, 2));
       row.push_back(fixed(100 * phase_depth[l], 2));
       row.push_back(fixed(100 * depth_range[l] / phase_depth[l], 1));
-      row.push_back(fixed(100 * (z[2] - z[0]) / z[0], 1));
+      row.push_back(fixed(100 * (z[kHalfCellPhase] - z[0]) / z[0], 1));
       for (double x : g) row.push_back(fixed(x, 2));
       row.push_back(fixed(phase_peak[l], 2));
       row.push_back(fixed(100 * peak_range[l] / phase_peak[l], 1));
@@ -243,8 +248,11 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     // A step between the two finest levels that is smaller than the phase scatter of the coarser one
     // cannot show convergence: one run per level is one sample of that scatter.
     const double last_depth_step = depth[n - 1] - depth[n - 2], last_peak_step = peak[n - 1] - peak[n - 2];
-    auto within = [](double step, double range) {
-      return std::abs(step) < range ? "within that level's phase range" : "larger than that level's phase range";
+    const std::size_t finest = kControlLevels - 1;  // the finest level with phases (0.5 cm)
+    const bool depth_within = std::abs(last_depth_step) < depth_range[finest];
+    const bool peak_within = std::abs(last_peak_step) < peak_range[finest];
+    auto within = [](bool is_within) {
+      return is_within ? "within that level's phase range" : "larger than that level's phase range";
     };
     md.paragraph("Means over the four phases at 2, 1 and 0.5 cm: final penetration " + fixed(100 * phase_depth[0], 2) +
                  " / " + fixed(100 * phase_depth[1], 2) + " / " + fixed(100 * phase_depth[2], 2) + " cm (steps " +
@@ -252,9 +260,9 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
                  fixed(phase_peak[1], 2) + " / " + fixed(phase_peak[2], 2) + " g (steps " + steps(phase_peak, 1.0) +
                  " g). The step from 0.5 to 0.25 cm, " + fixed(100 * last_depth_step, 2) +
                  " cm in the final penetration and " + fixed(last_peak_step, 2) + " g in the peak, is " +
-                 within(last_depth_step, depth_range[2]) + " at 0.5 cm (" + fixed(100 * depth_range[2], 2) +
-                 " cm) and " + within(last_peak_step, peak_range[2]) + " (" + fixed(peak_range[2], 2) + " g)" +
-                 (std::abs(last_depth_step) < depth_range[2] || std::abs(last_peak_step) < peak_range[2]
+                 within(depth_within) + " at 0.5 cm (" + fixed(100 * depth_range[finest], 2) + " cm) and " +
+                 within(peak_within) + " (" + fixed(peak_range[finest], 2) + " g)" +
+                 (depth_within || peak_within
                       ? ", so the Richardson figures below rest on single samples of the staircase."
                       : "."));
     auto describe = [](const char* what, const Extrapolation& e, double scale, const char* unit) {
