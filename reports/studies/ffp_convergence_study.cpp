@@ -2,7 +2,8 @@
 /// penetration and the 0–40 ms impulse against wall time, with the error against
 /// a Richardson extrapolation of the three finest meshes (or the finest, if that
 /// fails); the run's health per level; pure FLIP as a control, and the tip at four
-/// phases between two node rows (the staircase of the non-conforming cone).
+/// phases between two node rows (the staircase of the non-conforming cone); the
+/// levels' penetration at fixed times, to show where in the drop they part.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -44,16 +45,19 @@ double phase_spread(const std::vector<double>& v) {
 /// A level's expected wall time: particles grow as h⁻² and steps as h⁻¹; 1 cm takes about 5 s on one core.
 double level_wall_s(double h) { return 5.0 * std::pow(0.01 / h, 3); }
 
-/// The impulse of the soil on the FFP over 0–t (history.csv, linear between rows).
-double impulse_until(const CsvData& h, double t) {
-  if (!h.has("impulse_N_s")) return std::nan("");
+/// A history column at time t (history.csv, linear between rows; NaN outside the run).
+double value_at(const CsvData& h, const std::string& column, double t) {
+  if (!h.has(column) || !h.has("time_s")) return std::nan("");
   const auto& time = h.column("time_s");
-  const auto& impulse = h.column("impulse_N_s");
+  const auto& value = h.column(column);
   for (std::size_t k = 1; k < time.size(); ++k)
-    if (time[k] >= t)
-      return impulse[k - 1] + (impulse[k] - impulse[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
+    if (time[k] >= t) return value[k - 1] + (value[k] - value[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
   return std::nan("");
 }
+
+// Times at which the levels' penetrations are compared: the fast first half of the drop, where the
+// cone is embedded and the peak comes, and the slow second half, where the sand bears the body.
+constexpr std::array<double, 7> kCompareTimes_s = {0.01, 0.02, 0.03, 0.04, 0.06, 0.08, 0.15};
 
 double last(const CsvData& h, const std::string& column) {
   return h.has(column) && !h.column(column).empty() ? h.column(column).back() : std::nan("");
@@ -103,7 +107,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
       peak[i] = figure(results, i, "peak_deceleration_2ms_g");
       depth[i] = figure(results, i, "final_penetration_m");
       wall[i] = figure(results, i, "wall_time_s");
-      impulse[i] = impulse_until(results.history(i), 0.04);
+      impulse[i] = value_at(results.history(i), "impulse_N_s", 0.04);
     }
     const Extrapolation peak_ref = richardson(peak[n - 3], peak[n - 2], peak[n - 1]);
     const Extrapolation depth_ref = richardson(depth[n - 3], depth[n - 2], depth[n - 1]);
@@ -273,6 +277,108 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     md.paragraph(describe("2 ms peak deceleration", peak_ref, 1.0, "g") + "; " +
                  describe("final penetration", depth_ref, 100.0, "cm") + "; " +
                  describe("impulse over 0–40 ms", impulse_ref, 1.0, "N s") + ".");
+    // Where in the drop the levels part: the penetration of every level at fixed times, the steps
+    // between levels, the observed order from the three finest, and the 0.5 cm level's phase range
+    // at the same time (a step below it is not evidence either way).
+    {
+      const std::size_t finest_phases = n + kRunsPerControlLevel * (kControlLevels - 1) + 1;
+      auto penetration_at = [&](std::size_t run, double t) {
+        return value_at(results.history(run), "penetration_m", t);
+      };
+      auto phase_range_at = [&](double t) {
+        std::vector<double> z{penetration_at(kControlLevels - 1, t)};
+        for (std::size_t k = 0; k < kTipPhases.size(); ++k) z.push_back(penetration_at(finest_phases + k, t));
+        return std::ranges::all_of(z, [](double x) { return std::isfinite(x); }) ? phase_spread(z) : std::nan("");
+      };
+      std::vector<std::vector<std::string>> timeline;
+      std::size_t shrinking = 0;  // compare times, from the first, whose steps all shrink
+      std::size_t resolved = 0;   // ... and whose last step exceeds the 0.5 cm level's phase range
+      bool still_shrinking = true, still_resolved = true;
+      for (double t : kCompareTimes_s) {
+        std::vector<double> z(n);
+        for (std::size_t i = 0; i < n; ++i) z[i] = penetration_at(i, t);
+        std::vector<std::string> row{fixed(1000 * t, 0)};
+        for (double x : z) row.push_back(fixed(100 * x, 2));
+        bool shrinks = true;
+        for (std::size_t i = 1; i < n; ++i) {
+          row.push_back(fixed(100 * (z[i] - z[i - 1]), 2));
+          if (i > 1) shrinks = shrinks && std::abs(z[i] - z[i - 1]) < std::abs(z[i - 1] - z[i - 2]);
+        }
+        const Extrapolation e = richardson(z[n - 3], z[n - 2], z[n - 1]);
+        row.push_back(std::isfinite(e.order) ? fixed(e.order, 2) : "–");
+        const double range = phase_range_at(t);
+        row.push_back(fixed(100 * range, 2));
+        timeline.push_back(row);
+        still_shrinking = still_shrinking && shrinks;
+        still_resolved = still_resolved && still_shrinking && std::abs(z[n - 1] - z[n - 2]) > range;
+        if (still_shrinking) ++shrinking;
+        if (still_resolved) ++resolved;
+      }
+      auto ms = [](std::size_t k) { return fixed(1000 * kCompareTimes_s[k], 0) + " ms"; };
+      std::string reading = shrinking == 0 ? " The steps do not shrink at any of these times."
+                            : shrinking == kCompareTimes_s.size()
+                                ? " The steps shrink at every one of these times."
+                                : " The steps shrink at each halving up to " + ms(shrinking - 1) +
+                                      " and no longer at " + ms(shrinking) + ".";
+      if (resolved > 0 && resolved < shrinking)
+        reading += " Up to " + ms(resolved - 1) +
+                   " the last step is larger than the 0.5 cm level's phase range, so the shrinking is measured; "
+                   "from " +
+                   ms(resolved) +
+                   " on it lies within that range, and one run per level cannot show whether the steps shrink "
+                   "there.";
+      else if (resolved == 0 && shrinking > 0)
+        reading += " The last step lies within the 0.5 cm level's phase range from the first of these times on.";
+      md.paragraph(
+          "Where in the drop the levels part: each level's penetration (tip on a row) at fixed times, the steps "
+          "between successive levels, the observed order of the three finest (– where the steps do not shrink "
+          "monotonically or the order lies outside 0.3–4) and the 0.5 cm level's range over its four tip phases at "
+          "that time." +
+          reading);
+      std::vector<std::string> header{"t [ms]"};
+      for (double h : kReferenceCells_m) header.push_back("z at " + fixed(100 * h, 2) + " cm [cm]");
+      for (std::size_t i = 1; i < n; ++i)
+        header.push_back("step " + fixed(100 * kReferenceCells_m[i - 1], 2) + "→" +
+                         fixed(100 * kReferenceCells_m[i], 2));
+      header.push_back("order");
+      header.push_back("0.5 cm phase range [cm]");
+      md.table(header, timeline);
+      // The same on a 2 ms raster as a figure: each halving's step against time.
+      std::vector<Series> halvings;
+      for (std::size_t i = 1; i < n; ++i)
+        halvings.push_back(
+            {{},
+             {},
+             fixed(100 * kReferenceCells_m[i - 1], 2) + " → " + fixed(100 * kReferenceCells_m[i], 2) + " cm",
+             "lines"});
+      Series range{{}, {}, "0.5 cm level's phase range", "lines dashtype 2"};
+      for (double t = 0.002; t <= kCompareTimes_s.back() + 1e-9; t += 0.002) {
+        for (std::size_t i = 1; i < n; ++i) {
+          const double step = penetration_at(i, t) - penetration_at(i - 1, t);
+          if (!std::isfinite(step)) continue;
+          halvings[i - 1].x.push_back(1000 * t);
+          halvings[i - 1].y.push_back(100 * step);
+        }
+        const double r = phase_range_at(t);
+        if (std::isfinite(r)) {
+          range.x.push_back(1000 * t);
+          range.y.push_back(100 * r);
+        }
+      }
+      halvings.push_back(range);
+      const Plot step_plot{"Penetration step at each halving of the cell against time",
+                           "time (ms)",
+                           "penetration on the finer mesh − on the coarser (cm)",
+                           halvings,
+                           false,
+                           false,
+                           false,
+                           "top left"};
+      if (write_png(step_plot, out.figures_dir / "convergence_steps_in_time.png"))
+        md.figure(out.figures_relative + "/convergence_steps_in_time.png",
+                  "The change of penetration at each halving of the cell, against time, and the 0.5 cm level's "
+                  "range over its tip phases.");
+    }
     Plot p{"Error against wall time (2 cores)",
            "wall time of the run (s)",
            "relative error",
