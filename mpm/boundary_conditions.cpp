@@ -1,5 +1,9 @@
 #include "mpm/boundary_conditions.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
 namespace ffp::mpm {
 
 namespace {
@@ -12,8 +16,22 @@ std::uint8_t bits_of(Fixity f, std::uint8_t normal) {
       return normal;
     case Fixity::fixed:
       return constrain_r | constrain_z;
+    case Fixity::absorbing:
+      return 0;
   }
   return 0;
+}
+
+/// ∫ N_i(x) w(x) dx over the hat of node i with w(x) = x (radial weight) or 1:
+/// on each neighbouring segment [x_i, x_n], ∫ N_i x dx = L (2 x_i + x_n)/6 and ∫ N_i dx = L/2.
+double hat_integral(const GridAxis& x, int i, bool radial) {
+  double sum = 0.0;
+  for (const int n : {i - 1, i + 1}) {
+    if (n < 0 || n >= x.nodes()) continue;
+    const double length = std::abs(x.coordinate(n) - x.coordinate(i));
+    sum += radial ? length * (2.0 * x.coordinate(i) + x.coordinate(n)) / 6.0 : length / 2.0;
+  }
+  return sum;
 }
 
 }  // namespace
@@ -32,6 +50,50 @@ std::vector<NodeConstraint> constrained_nodes(const BoundaryConditions& bc, int 
     }
   }
   return out;
+}
+
+std::vector<AbsorbingNode> absorbing_nodes(const BoundaryConditions& bc, int nr, int nz) {
+  std::vector<AbsorbingNode> out;
+  for (int j = 0; j < nz; ++j) {
+    for (int i = 0; i < nr; ++i) {
+      const AbsorbingNode a{static_cast<std::uint32_t>(i + nr * j),
+                            i,
+                            j,
+                            bc.bottom == Fixity::absorbing && j == 0,
+                            bc.top == Fixity::absorbing && j == nz - 1,
+                            bc.inner == Fixity::absorbing && i == 0,
+                            bc.outer == Fixity::absorbing && i == nr - 1};
+      if (a.bottom || a.top || a.inner || a.outer) out.push_back(a);
+    }
+  }
+  return out;
+}
+
+Dashpot dashpot(const AbsorbingNode& a, const GridAxis& r, const GridAxis& z, const Impedance& beyond) {
+  const double normal = beyond.density_kg_m3 * beyond.p_wave_m_s, tangential = beyond.density_kg_m3 * beyond.s_wave_m_s;
+  // G/R of the springs: G = ρ c_s²; R the node's distance from the source.
+  double g_over_r = 0.0;
+  if (beyond.has_source) {
+    const double distance = std::hypot(r.coordinate(a.i) - beyond.source_r_m, z.coordinate(a.j) - beyond.source_z_m);
+    g_over_r = beyond.density_kg_m3 * beyond.s_wave_m_s * beyond.s_wave_m_s / std::max(distance, 1e-9);
+  }
+  Dashpot d{0.0, 0.0, 0.0, 0.0};
+  const int sides_z = int{a.bottom} + int{a.top}, sides_r = int{a.inner} + int{a.outer};
+  if (sides_z > 0) {
+    const double area = sides_z * hat_integral(r, a.i, true);
+    d.damping_z += normal * area;
+    d.damping_r += tangential * area;
+    d.stiffness_z += kSpringNormal * g_over_r * area;
+    d.stiffness_r += kSpringTangential * g_over_r * area;
+  }
+  if (sides_r > 0) {
+    const double area = sides_r * r.coordinate(a.i) * hat_integral(z, a.j, false);
+    d.damping_r += normal * area;
+    d.damping_z += tangential * area;
+    d.stiffness_r += kSpringNormal * g_over_r * area;
+    d.stiffness_z += kSpringTangential * g_over_r * area;
+  }
+  return d;
 }
 
 }  // namespace ffp::mpm

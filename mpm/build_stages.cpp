@@ -14,6 +14,7 @@ StageList build_stages(const Simulation& s) {
   if (!s.pressures.empty()) list.append({"apply_surface_pressure", apply_surface_pressure});
   if (s.settings.local_damping > 0.0) list.append({"apply_local_damping", apply_local_damping});
   list.append({"integrate_grid", integrate_grid});
+  if (!s.absorbing.empty()) list.append({"apply_absorbing_boundaries", apply_absorbing_boundaries});
   list.append({"apply_boundary_conditions", apply_boundary_conditions});
   list.append({"update_particles", update_particles});
   if (s.settings.transfer != Transfer::usl) {

@@ -130,8 +130,11 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   if (d.gravity_m_s2 > 0.0) m.gravity_m_s2 = d.gravity_m_s2;  // weightless: no gravity stage, no K0 stress
   m.solver = d.solver;
   // Paper Fig. 4b: lateral wall on rollers, bottom and top fixed (the top is in the air).
-  m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::fixed};
   const FfpSoil& s = d.soil;
+  const bool absorbing = s.walls == ChamberWalls::absorbing;
+  m.boundaries = {Fixity::roller, absorbing ? Fixity::absorbing : Fixity::roller,
+                  absorbing ? Fixity::absorbing : Fixity::fixed, Fixity::fixed};
+  if (absorbing) m.wave_source_m = std::pair{0.0, 0.0};  // the impact point: the sand's surface on the axis
   if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
     throw std::invalid_argument("particles per cell must be ≥ 1");
   m.bodies.push_back(BodyDescription{

@@ -30,11 +30,21 @@
 
 namespace ffp::mpm {
 
+/// The chamber's base and lateral wall: the paper's rigid ones (base fixed, wall on
+/// rollers) or absorbing ones (mpm/boundary_conditions.hpp: the sand goes on beyond them,
+/// as under a field drop; the waves the impact sends out do not come back).
+enum class ChamberWalls : std::uint8_t { rigid, absorbing };
+using ChamberWallsName = std::pair<ChamberWalls, std::string_view>;
+/// The scene's names of ChamberWalls, in the order messages list them.
+inline constexpr auto kChamberWallsNames =
+    std::to_array<ChamberWallsName>({{ChamberWalls::rigid, "rigid"}, {ChamberWalls::absorbing, "absorbing"}});
+
 struct FfpSoil {
   MaterialLaw law = LinearElastic(ElasticConstants{1e6, 0.3});
   double density_kg_m3 = 1488.3;
-  double depth_m = 0.4, radius_m = 0.4;  ///< the chamber (bottom fixed, lateral wall on rollers)
-  double k0 = 0.39;                      ///< σ'_h = K0 σ'_v at t = 0
+  double depth_m = 0.4, radius_m = 0.4;  ///< the chamber
+  ChamberWalls walls = ChamberWalls::rigid;
+  double k0 = 0.39;  ///< σ'_h = K0 σ'_v at t = 0
   /// Near zone (r ≤ near_radius, depth ≤ near_depth): this many particles per
   /// min_cell × min_cell, at the same spacing in larger cells (paper: 10 per cell below the FFP).
   int near_ppc_r = 3, near_ppc_z = 3;

@@ -119,6 +119,9 @@ struct ModelDescription {
   std::vector<double> r_nodes_m, z_nodes_m;
   std::vector<BodyDescription> bodies;
   BoundaryConditions boundaries;
+  /// Where the waves an absorbing side takes come from (r, z in m): adds the far field's
+  /// springs to its dashpots (mpm/boundary_conditions.hpp). None: dashpots alone.
+  std::optional<std::pair<double, double>> wave_source_m;
   std::optional<double> gravity_m_s2;  ///< magnitude, acting along −z; absent: no gravity stage
   std::vector<SurfacePressure> pressures;
   SolverSettings solver;

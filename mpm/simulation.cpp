@@ -1,6 +1,7 @@
 #include "mpm/simulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -48,6 +49,21 @@ Simulation::Simulation(const ModelDescription& model)
     groups.back().end = particles.size();
     groups.back().states = initial_states(d.law, groups.back().size());
     bodies.push_back({d.name, b, 0, begin, particles.size()});
+  }
+
+  if (std::ranges::any_of(
+          std::array{model.boundaries.inner, model.boundaries.outer, model.boundaries.bottom, model.boundaries.top},
+          [](Fixity f) { return f == Fixity::absorbing; })) {
+    absorbing = absorbing_nodes(model.boundaries, grid.r.nodes(), grid.z.nodes());
+    const BodyDescription& first = model.bodies.front();
+    const ElasticConstants& e = elastic_constants(first.law);
+    beyond = {first.density_kg_m3, e.p_wave_speed(first.density_kg_m3),
+              std::sqrt(e.shear_modulus() / first.density_kg_m3)};
+    if (model.wave_source_m) {
+      beyond.has_source = true;
+      beyond.source_r_m = model.wave_source_m->first;
+      beyond.source_z_m = model.wave_source_m->second;
+    }
   }
 
   const double lightest = *std::min_element(particles.mass.begin(), particles.mass.end());

@@ -72,7 +72,14 @@ class Simulation {
   /// it touches moves with it, and a body that crosses more than a cell per step
   /// jumps over its contact nodes (measured: a 200 m/s impact failed at step 0).
   double rigid_speed_m_s = 0.0;
-  Walls walls{};         ///< from the boundary conditions
+  Walls walls{};                         ///< from the boundary conditions
+  std::vector<AbsorbingNode> absorbing;  ///< nodes on absorbing sides (mpm/boundary_conditions.hpp)
+  Impedance beyond{};                    ///< the material beyond them: the first body's
+  /// The static reaction each absorbing node carried at the first step, per field (field-major,
+  /// N per radian): held constant, so that a sand at rest stays at rest.
+  std::vector<double> absorbing_reaction_r, absorbing_reaction_z;
+  /// Each absorbing node's displacement since the start, per field (the springs' extension).
+  std::vector<double> absorbing_displacement_r, absorbing_displacement_z;
   long wall_clamps = 0;  ///< particle moves stopped at a wall or the axis (should stay 0)
   /// Particles [0, main_step_end) are moved, strained and stressed by the step's stages;
   /// those after it belong to a body that takes its own substeps inside the step

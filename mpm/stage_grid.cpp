@@ -90,6 +90,49 @@ void integrate_grid(Simulation& s) {
   }
 }
 
+// Lysmer & Kuhlemeyer (1969), with the springs of Liu et al. (2006) when the waves' source is
+// known: on an absorbing side f_i = R_i − c_i v_i^{n+1} − k_i u_i^{n+1}, c_i = ρ c A_i, k_i = α G A_i/R
+// (mpm/boundary_conditions.hpp), taken at the step's end so that no step is too long for them:
+// m_i (v^{n+1} − v^n) = Δt (f_i + R_i − c_i v^{n+1} − k_i (u^n + Δt v^{n+1})), i.e.
+// v ← (m v* + Δt (R − k u^n))/(m + Δt c + Δt² k) with v* integrate_grid's velocity, then u += Δt v.
+// R_i = −(f_i^int + f_i^ext) of the first step: the reaction the side carried in the initial
+// (geostatic) state, held so that the sand at rest stays at rest.
+void apply_absorbing_boundaries(Simulation& s) {
+  const std::size_t n = s.absorbing.size(), fields = s.grid.fields.size();
+  if (s.absorbing_reaction_r.size() != n * fields) {
+    s.absorbing_reaction_r.assign(n * fields, 0.0);
+    s.absorbing_reaction_z.assign(n * fields, 0.0);
+    s.absorbing_displacement_r.assign(n * fields, 0.0);
+    s.absorbing_displacement_z.assign(n * fields, 0.0);
+    for (std::size_t k = 0; k < fields; ++k) {
+      const NodalField& f = s.grid.fields[k];
+      for (std::size_t a = 0; a < n; ++a) {
+        const std::size_t i = s.absorbing[a].node;
+        s.absorbing_reaction_r[k * n + a] = -(f.internal_force_r[i] + f.external_force_r[i]);
+        s.absorbing_reaction_z[k * n + a] = -(f.internal_force_z[i] + f.external_force_z[i]);
+      }
+    }
+  }
+  const double dt = s.dt_s, floor = s.mass_floor_kg;
+  for (std::size_t a = 0; a < n; ++a) {
+    const Dashpot d = dashpot(s.absorbing[a], s.grid.r, s.grid.z, s.beyond);
+    const std::size_t i = s.absorbing[a].node;
+    for (std::size_t k = 0; k < fields; ++k) {
+      NodalField& f = s.grid.fields[k];
+      const double m = f.mass[i];
+      if (!(m > floor)) continue;
+      double& ur = s.absorbing_displacement_r[k * n + a];
+      double& uz = s.absorbing_displacement_z[k * n + a];
+      f.velocity_new_r[i] = (m * f.velocity_new_r[i] + dt * (s.absorbing_reaction_r[k * n + a] - d.stiffness_r * ur)) /
+                            (m + dt * d.damping_r + dt * dt * d.stiffness_r);
+      f.velocity_new_z[i] = (m * f.velocity_new_z[i] + dt * (s.absorbing_reaction_z[k * n + a] - d.stiffness_z * uz)) /
+                            (m + dt * d.damping_z + dt * dt * d.stiffness_z);
+      ur += dt * f.velocity_new_r[i];
+      uz += dt * f.velocity_new_z[i];
+    }
+  }
+}
+
 // Constrained components: v_i^n = v_i^{n+1} = 0, so the FLIP increment there is 0
 // as well (equivalent to zeroing p_i and f_i, Sulsky et al. 1995).
 void apply_boundary_conditions(Simulation& s) {

@@ -33,15 +33,16 @@ void smooth_mean_stress(Simulation& s);       ///< cell-averaged mean stress for
 void clear_cell_mean_stress(Simulation& s);
 void strip_cell_mean_stress(Simulation& s, int strip, std::span<const std::uint32_t> particles,
                             const std::vector<double>& limit);
-void compute_internal_forces(Simulation& s);    ///< f_i^int incl. the hoop term
-void apply_gravity(Simulation& s);              ///< f_i^ext += m_i g
-void apply_surface_pressure(Simulation& s);     ///< nodal forces of pressures on r grid lines
-void apply_local_damping(Simulation& s);        ///< Cundall: f_i −= α |f_i| sign(v_i)
-void integrate_grid(Simulation& s);             ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
-void apply_boundary_conditions(Simulation& s);  ///< zero constrained velocity components
-void update_particles(Simulation& s);           ///< FLIP/PIC velocity; position (but musl_remapped); MUSL: p_i
-void move_particles(Simulation& s);             ///< musl_remapped: position from the remapped velocities
-void map_velocities_to_grid(Simulation& s);     ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i (sum from update_particles)
+void compute_internal_forces(Simulation& s);     ///< f_i^int incl. the hoop term
+void apply_gravity(Simulation& s);               ///< f_i^ext += m_i g
+void apply_surface_pressure(Simulation& s);      ///< nodal forces of pressures on r grid lines
+void apply_local_damping(Simulation& s);         ///< Cundall: f_i −= α |f_i| sign(v_i)
+void integrate_grid(Simulation& s);              ///< v_i^n = p_i/m_i, v_i^{n+1} = v_i^n + Δt f_i/m_i
+void apply_boundary_conditions(Simulation& s);   ///< zero constrained velocity components
+void apply_absorbing_boundaries(Simulation& s);  ///< dashpots and the held static reaction on absorbing sides
+void update_particles(Simulation& s);            ///< FLIP/PIC velocity; position (but musl_remapped); MUSL: p_i
+void move_particles(Simulation& s);              ///< musl_remapped: position from the remapped velocities
+void map_velocities_to_grid(Simulation& s);      ///< MUSL: v_i = Σ S m v_p^{n+1} / m_i (sum from update_particles)
 
 void compute_strain_increments(Simulation& s, StrainVelocity source);  ///< Δε, spin, volume
 void smooth_volumetric_strain(Simulation& s);                          ///< cell-averaged Δε_vol

@@ -33,6 +33,7 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   SceneReader soil = scene.object("soil");
   d.soil.depth_m = soil.number("depth_m", Range::positive(kMaxLength_m, "m"), 0.4);
   d.soil.radius_m = soil.number("radius_m", Range::positive(kMaxLength_m, "m"), 0.4);
+  d.soil.walls = soil.choice("walls", mpm::kChamberWallsNames, mpm::ChamberWalls::rigid);
   d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), spec.at_rest_k0());
   if (soil.has("near_spacing_m")) {
     // A spacing in metres, the same at every mesh size; checked against mesh.min_cell_m in read_mesh.
@@ -50,7 +51,8 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
       soil.number("near_depth_m", Range::closed(0.0, d.soil.depth_m, "m (≤ depth_m)"), d.soil.depth_m);
   d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
   soil.finish(
-      "soil (depth_m, radius_m, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, near_radius_m, "
+      "soil (depth_m, radius_m, walls, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, "
+      "near_radius_m, "
       "near_depth_m, disconnected_density_ratio)");
   return cohesion_Pa;
 }

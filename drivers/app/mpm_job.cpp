@@ -8,7 +8,7 @@
 ///                region {r_min_m, r_max_m, z_min_m, z_max_m} | {sphere_center_z_m, sphere_radius_m},
 ///                particles_per_cell [n_r, n_z], initial_velocity_m_s [v_r, v_z],
 ///                initial_stress {k0 (default Jaky / ν/(1−ν)), surface_z_m}}
-///   boundaries  {axis (or inner when r_min > 0), outer, bottom, top}: free | roller | fixed
+///   boundaries  {axis (or inner when r_min > 0), outer, bottom, top}: free | roller | fixed | absorbing
 ///   surface_pressures[]   {side: inner|outer, pressure_kPa, ramp_time_s, z_min_m, z_max_m}
 ///   solver      {shape_function: gimp|linear, transfer: musl|usl, flip_fraction, courant,
 ///                dt_s (fixed; refused above the CFL limit), strain_smoothing, local_damping}
