@@ -52,14 +52,14 @@ std::vector<NodeConstraint> constrained_nodes(const BoundaryConditions& bc, int 
   return out;
 }
 
-std::vector<AbsorbingNode> absorbing_nodes(const BoundaryConditions& bc, int nr, int nz) {
+std::vector<AbsorbingNode> absorbing_nodes(const BoundaryConditions& bc, int nr, int nz, int bottom_row) {
   std::vector<AbsorbingNode> out;
   for (int j = 0; j < nz; ++j) {
     for (int i = 0; i < nr; ++i) {
       const AbsorbingNode a{static_cast<std::uint32_t>(i + nr * j),
                             i,
                             j,
-                            bc.bottom == Fixity::absorbing && j == 0,
+                            bc.bottom == Fixity::absorbing && j == bottom_row,
                             bc.top == Fixity::absorbing && j == nz - 1,
                             bc.inner == Fixity::absorbing && i == 0,
                             bc.outer == Fixity::absorbing && i == nr - 1};

@@ -65,7 +65,8 @@ struct AbsorbingNode {
   bool inner, outer;  ///< on an absorbing side of normal r
 };
 
-std::vector<AbsorbingNode> absorbing_nodes(const BoundaryConditions& bc, int nr, int nz);
+/// The nodes of the absorbing sides; an absorbing bottom's on row `bottom_row`.
+std::vector<AbsorbingNode> absorbing_nodes(const BoundaryConditions& bc, int nr, int nz, int bottom_row = 0);
 
 /// Dashpot coefficients per radian (kg/s) of a node on absorbing sides, the material's
 /// impedance times the node's share A_i of the side: ρ c_p A_i normal to the side, ρ c_s A_i

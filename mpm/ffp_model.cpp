@@ -103,9 +103,16 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   // non-conforming cone is measured by comparing the two).
   const double offset = m.tip_offset_cells * h;
   const double band_bottom = -n_below * h + offset;
-  g.z_nodes_m = {-d.soil.depth_m};
   const double compress = d.soil.depth_m + band_bottom;
-  append_uniform(g.z_nodes_m, band_bottom, std::max(2, static_cast<int>(std::lround(compress / m.below_cell_m))));
+  const int n_compress = std::max(2, static_cast<int>(std::lround(compress / m.below_cell_m)));
+  g.z_nodes_m = {-d.soil.depth_m};
+  if (d.soil.walls == ChamberWalls::absorbing) {
+    // One empty cell under the sand: the absorbing base moves (about a millimetre under the
+    // axis), and the sand it carries down must stay inside the grid.
+    g.z_nodes_m.insert(g.z_nodes_m.begin(), -d.soil.depth_m - compress / n_compress);
+    g.base_row = 1;
+  }
+  append_uniform(g.z_nodes_m, band_bottom, n_compress);
   g.band_first = static_cast<int>(g.z_nodes_m.size()) - 1;
   const double top = d.shape.total_length_m();
   // Fine cells above the tip, leaving at least one cell's height below the body's top (no sliver cell).
@@ -134,7 +141,10 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   const bool absorbing = s.walls == ChamberWalls::absorbing;
   m.boundaries = {Fixity::roller, absorbing ? Fixity::absorbing : Fixity::roller,
                   absorbing ? Fixity::absorbing : Fixity::fixed, Fixity::fixed};
-  if (absorbing) m.wave_source_m = std::pair{0.0, 0.0};  // the impact point: the sand's surface on the axis
+  if (absorbing) {
+    m.wave_source_m = std::pair{0.0, 0.0};  // the impact point: the sand's surface on the axis
+    m.absorbing_bottom_row = g.base_row;    // the sand's base, above the grid's empty bottom cell
+  }
   if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
     throw std::invalid_argument("particles per cell must be ≥ 1");
   m.bodies.push_back(BodyDescription{
@@ -172,7 +182,7 @@ FfpRun::FfpRun(const FfpDescription& d)
     : description_(d),
       geometry_(d.shape),
       layout_(ffp_grid_layout(d)),
-      mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last, d.mesh.min_compressed_cell_m),
+      mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last, d.mesh.min_compressed_cell_m, layout_.base_row),
       simulation_(build_model(d, layout_, geometry_)) {
   Simulation& s = simulation_;
   if (d.deformable) {

@@ -150,6 +150,9 @@ struct FfpDescription {
 struct FfpGridLayout {
   std::vector<double> r_nodes_m, z_nodes_m;
   int band_first = 0, band_last = 0;  ///< rows of the band's bottom and top
+  /// The sand's base row: 0, or 1 under absorbing walls, whose base moves and needs a cell of
+  /// grid below it for the sand it carries down.
+  int base_row = 0;
 };
 
 /// Throws std::invalid_argument for sizes that do not fit together.

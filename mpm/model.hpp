@@ -122,6 +122,9 @@ struct ModelDescription {
   /// Where the waves an absorbing side takes come from (r, z in m): adds the far field's
   /// springs to its dashpots (mpm/boundary_conditions.hpp). None: dashpots alone.
   std::optional<std::pair<double, double>> wave_source_m;
+  /// The row of an absorbing bottom's dashpots: 0 (the grid's edge) or a row above empty cells
+  /// (the sand's base over a margin), whose grid edge is then fixed.
+  int absorbing_bottom_row = 0;
   std::optional<double> gravity_m_s2;  ///< magnitude, acting along −z; absent: no gravity stage
   std::vector<SurfacePressure> pressures;
   SolverSettings solver;

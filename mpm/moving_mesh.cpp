@@ -9,18 +9,19 @@
 
 namespace ffp::mpm {
 
-MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_last, double min_compressed_cell_m)
-    : z0_(std::move(z_nodes)), band_first_(band_first), band_last_(band_last) {
+MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_last, double min_compressed_cell_m,
+                       int base_row)
+    : z0_(std::move(z_nodes)), band_first_(band_first), band_last_(band_last), base_row_(base_row) {
   const int last = static_cast<int>(z0_.size()) - 1;
-  if (!(band_first > 0 && band_first < band_last && band_last < last))
+  if (!(base_row >= 0 && band_first > base_row && band_first < band_last && band_last < last))
     throw std::invalid_argument("moving mesh: the band must leave at least one cell below and above it");
   if (!(min_compressed_cell_m >= 0.0)) throw std::invalid_argument("moving mesh: the smallest cell must be ≥ 0");
   // The zone [bottom, band bottom] compresses uniformly: its smallest cell, times the
   // ratio below = (height + u)/height, reaches the limit at u = height (ratio − 1).
-  const auto lo = static_cast<std::size_t>(band_first);
-  const double height = z0_[lo] - z0_.front();
+  const auto lo = static_cast<std::size_t>(band_first), base = static_cast<std::size_t>(base_row);
+  const double height = z0_[lo] - z0_[base];
   double smallest = height;
-  for (std::size_t j = 1; j <= lo; ++j) smallest = std::min(smallest, z0_[j] - z0_[j - 1]);
+  for (std::size_t j = base + 1; j <= lo; ++j) smallest = std::min(smallest, z0_[j] - z0_[j - 1]);
   band_stop_m_ = min_compressed_cell_m > 0.0 ? height * (std::min(1.0, min_compressed_cell_m / smallest) - 1.0)
                                              : -std::numeric_limits<double>::infinity();
 }
@@ -28,7 +29,8 @@ MovingMesh::MovingMesh(std::vector<double> z_nodes, int band_first, int band_las
 std::vector<double> MovingMesh::coordinates(double u) const {
   const std::size_t n = z0_.size();
   const auto lo = static_cast<std::size_t>(band_first_), hi = static_cast<std::size_t>(band_last_);
-  const double bottom = z0_.front(), top = z0_.back();
+  const auto base = static_cast<std::size_t>(base_row_);
+  const double bottom = z0_[base], top = z0_.back();
   // Compressing zone [bottom, band bottom] and stretching zone [band top, top]:
   // each node keeps its relative position in its zone.
   const double below = (z0_[lo] + u - bottom) / (z0_[lo] - bottom);
@@ -45,7 +47,9 @@ std::vector<double> MovingMesh::coordinates(double u) const {
   const double band_above = (top - (z0_[hi] + band)) / (top - z0_[hi]);
   std::vector<double> z(n);
   for (std::size_t j = 0; j < n; ++j) {
-    if (j <= lo) {
+    if (j <= base) {
+      z[j] = z0_[j];  // the margin under the sand, and the sand's base
+    } else if (j <= lo) {
       z[j] = bottom + (z0_[j] - bottom) * band_below;
     } else if (j < hi) {
       z[j] = z0_[j] + band;
@@ -53,7 +57,7 @@ std::vector<double> MovingMesh::coordinates(double u) const {
       z[j] = top - (top - z0_[j]) * band_above;
     }
   }
-  z.front() = bottom;  // the fixed ends stay exactly where they are
+  z[base] = bottom;  // the fixed ends stay exactly where they are
   z.back() = top;
   return z;
 }

@@ -25,7 +25,10 @@ class MovingMesh {
   /// (0 < band_first < band_last < last row) form the moving band. The band stops
   /// going down once the compressing zone's cells are `min_compressed_cell_m`
   /// high (0: no limit, the zone compresses to 5 % of its height).
-  MovingMesh(std::vector<double> z_nodes, int band_first, int band_last, double min_compressed_cell_m = 0.0);
+  /// Rows below `base_row` (a margin under the sand, absorbing walls) stay where they are; the
+  /// compressing zone runs from base_row up to the band.
+  MovingMesh(std::vector<double> z_nodes, int band_first, int band_last, double min_compressed_cell_m = 0.0,
+             int base_row = 0);
 
   /// Vertical coordinates for a penetrometer displaced by `displacement_m` (+ up):
   /// the band follows it down to band_stop_m(). Throws StepFailure when the
@@ -43,7 +46,7 @@ class MovingMesh {
 
  private:
   std::vector<double> z0_;
-  int band_first_ = 0, band_last_ = 0;
+  int band_first_ = 0, band_last_ = 0, base_row_ = 0;
   double band_stop_m_ = 0.0;
 };
 

@@ -54,7 +54,10 @@ Simulation::Simulation(const ModelDescription& model)
   if (std::ranges::any_of(
           std::array{model.boundaries.inner, model.boundaries.outer, model.boundaries.bottom, model.boundaries.top},
           [](Fixity f) { return f == Fixity::absorbing; })) {
-    absorbing = absorbing_nodes(model.boundaries, grid.r.nodes(), grid.z.nodes());
+    absorbing = absorbing_nodes(model.boundaries, grid.r.nodes(), grid.z.nodes(), model.absorbing_bottom_row);
+    if (model.absorbing_bottom_row > 0)  // the margin's edge below the sand's base: fixed
+      for (int i = 0; i < grid.r.nodes(); ++i)
+        grid.constraints.push_back({static_cast<std::uint32_t>(i), constrain_r | constrain_z});
     const BodyDescription& first = model.bodies.front();
     const ElasticConstants& e = elastic_constants(first.law);
     beyond = {first.density_kg_m3, e.p_wave_speed(first.density_kg_m3),

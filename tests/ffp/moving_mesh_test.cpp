@@ -36,6 +36,22 @@ TEST_CASE("moving mesh: the band translates, the zones below and above scale uni
 }
 
 TEST_CASE(
+    "moving mesh: with a margin under the sand (base_row 1) the margin and the sand's base stay, the zone "
+    "above the base compresses",
+    "[ffp][moving_mesh]") {
+  const std::vector<double> z0 = {-0.45, -0.4, -0.3, -0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.3, 0.5};
+  const MovingMesh mesh(z0, 4, 8, 0.0, 1);
+  const double u = -0.07;
+  const std::vector<double> z = mesh.coordinates(u);
+  CHECK(z[0] == -0.45);
+  CHECK(z[1] == -0.4);
+  for (int j = 4; j <= 8; ++j) CHECK(z[j] == Approx(z0[j] + u).epsilon(kExact));
+  const double below = (z0[4] + u + 0.4) / (z0[4] + 0.4);
+  for (int j = 1; j < 4; ++j) CHECK(z[j + 1] - z[j] == Approx(below * (z0[j + 1] - z0[j])).epsilon(kExact));
+  CHECK_THROWS_AS(MovingMesh(z0, 1, 8, 0.0, 1), std::invalid_argument);  // no compressing zone left
+}
+
+TEST_CASE(
     "moving mesh: the band stops where the compressing cells reach min_compressed_cell_m, the zones keep the "
     "limit, and going through the chamber still throws",
     "[ffp][moving_mesh]") {
