@@ -52,8 +52,7 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.disconnected_density_ratio = soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5);
   soil.finish(
       "soil (depth_m, radius_m, walls, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, "
-      "near_radius_m, "
-      "near_depth_m, disconnected_density_ratio)");
+      "near_radius_m, near_depth_m, disconnected_density_ratio)");
   return cohesion_Pa;
 }
 

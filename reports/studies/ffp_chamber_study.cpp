@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "models/elastic.hpp"
 #include "reports/studies/ffp_figures.hpp"
 #include "reports/studies/studies.hpp"
 #include "reports/studies/study_helpers.hpp"
@@ -38,11 +39,10 @@ static_assert(kChambers[kLargest].depth_m == 1.6 && kChambers[kAbsorbing].absorb
 constexpr double kDepartureShare = 0.05;
 constexpr double kMeanWindow_s = 0.002;
 
-/// The p-wave speed of the linear-elastic sand, c_p = √(M/ρ), M = E(1 − ν)/((1 + ν)(1 − 2ν)).
+/// The p-wave speed of the scene's linear-elastic sand, c_p = √(M/ρ).
 double p_wave_speed_m_s(const nlohmann::json& material) {
-  const double e = 1e3 * material.at("E_kPa").get<double>(), nu = material.at("nu").get<double>();
-  const double rho = material.at("density_kg_m3").get<double>();
-  return std::sqrt(e * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho);
+  const ElasticConstants elastic{1e3 * material.at("E_kPa").get<double>(), material.at("nu").get<double>()};
+  return elastic.p_wave_speed(material.at("density_kg_m3").get<double>());
 }
 
 /// The 2 ms running mean of the reaction at each history row.
@@ -58,13 +58,6 @@ std::vector<double> mean_reaction(const CsvData& h) {
     mean[k] = sum / static_cast<double>(k - first + 1);
   }
   return mean;
-}
-
-/// Linear interpolation of (t, y) at time x; NaN outside.
-double interpolate(const std::vector<double>& t, const std::vector<double>& y, double x) {
-  for (std::size_t k = 1; k < t.size(); ++k)
-    if (t[k] >= x) return y[k - 1] + (y[k] - y[k - 1]) * (x - t[k - 1]) / (t[k] - t[k - 1]);
-  return std::nan("");
 }
 
 /// When the base's echo reaches the tip: the wave leaves the surface at impact, goes down to the base

@@ -47,12 +47,7 @@ double level_wall_s(double h) { return 5.0 * std::pow(0.01 / h, 3); }
 
 /// A history column at time t (history.csv, linear between rows; NaN outside the run).
 double value_at(const CsvData& h, const std::string& column, double t) {
-  if (!h.has(column) || !h.has("time_s")) return std::nan("");
-  const auto& time = h.column("time_s");
-  const auto& value = h.column(column);
-  for (std::size_t k = 1; k < time.size(); ++k)
-    if (time[k] >= t) return value[k - 1] + (value[k] - value[k - 1]) * (t - time[k - 1]) / (time[k] - time[k - 1]);
-  return std::nan("");
+  return h.has(column) && h.has("time_s") ? interpolate(h.column("time_s"), h.column(column), t) : std::nan("");
 }
 
 // Times at which the levels' penetrations are compared: the fast first half of the drop, where the

@@ -13,17 +13,6 @@ namespace {
 
 constexpr double kReferenceVelocity_m_s = 0.02;  // CPT rate, paper section 6
 
-/// Linear interpolation of y(x) on a table sorted by x (NaN outside).
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  if (x.size() < 2 || at < x.front() || at > x.back()) return std::nan("");
-  const auto upper = std::upper_bound(x.begin(), x.end(), at);
-  if (upper == x.end()) return y.back();
-  const std::size_t j = static_cast<std::size_t>(upper - x.begin());
-  if (j == 0) return y.front();
-  const double w = (at - x[j - 1]) / (x[j] - x[j - 1]);
-  return (1 - w) * y[j - 1] + w * y[j];
-}
-
 /// The part of a push history that only goes deeper (a monotone depth table).
 void monotone_in_depth(const std::vector<double>& depth, const std::vector<double>& value, std::vector<double>& d_out,
                        std::vector<double>& v_out) {

@@ -1,5 +1,6 @@
 #include "reports/studies/study_helpers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -17,6 +18,16 @@ bool include_run_figure(const StudyResults& results, std::size_t run, const std:
   fs::copy_file(source, out.figures_dir / name, fs::copy_options::overwrite_existing);
   out.document.figure(out.figures_relative + "/" + name, caption);
   return true;
+}
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (x.size() < 2 || at < x.front() || at > x.back()) return std::nan("");
+  const auto upper = std::upper_bound(x.begin(), x.end(), at);
+  if (upper == x.end()) return y.back();
+  const std::size_t j = static_cast<std::size_t>(upper - x.begin());
+  if (j == 0) return y.front();
+  const double w = (at - x[j - 1]) / (x[j] - x[j - 1]);
+  return (1 - w) * y[j - 1] + w * y[j];
 }
 
 std::string scientific(double value, int digits) {

@@ -2,6 +2,7 @@
 /// Small helpers the study writers share.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "reports/study.hpp"
 
@@ -18,6 +19,9 @@ std::string scientific(double value, int digits = 2);
 /// Request for a scene in the scenes folder, with overrides.
 RunRequest scene_run(const std::filesystem::path& scenes_dir, const std::string& scene_file, const std::string& label,
                      std::vector<std::string> overrides = {});
+
+/// Linear interpolation of y(x) on a table sorted by x (NaN outside).
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
 
 /// A value extrapolated from three meshes halving in size, and its observed order.
 struct Extrapolation {
