@@ -21,6 +21,7 @@
 /// reference FFP run (6,086 particles, 2.4 MB) gained nothing from a second
 /// thread in the shape-function, transfer and smoothing stages.
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -125,6 +126,31 @@ struct ParticleBins {
     for (int part = team_member(); part < count; part += team_size()) {
       const auto [first, last] = ready ? particle_range(part) : std::pair<std::size_t, std::size_t>{0, n};
       if (std::max(first, begin) < std::min(last, end)) fn(std::max(first, begin), std::min(last, end));
+    }
+  }
+
+  /// fn(first, last) over batches of at most `batch` particles of [begin, end), for a
+  /// stage whose cost per particle varies in space (the plastic returns gather where
+  /// the sand yields, in one part): each thread takes its own part's batches in
+  /// order, then helps with the others' from where they stand. Any schedule is
+  /// fine for a stage whose particles are independent.
+  template <class Fn>
+  void for_each_particle_batch(std::size_t begin, std::size_t end, std::size_t n, std::size_t batch,
+                               [[maybe_unused]] bool parallel, Fn&& fn) const {
+    const bool ready = covers(n);
+    const int count = ready ? parts() : 1;
+    std::vector<std::atomic<std::size_t>> next(static_cast<std::size_t>(count));
+    std::vector<std::size_t> stop(static_cast<std::size_t>(count));
+    for (int part = 0; part < count; ++part) {
+      const auto [first, last] = ready ? particle_range(part) : std::pair<std::size_t, std::size_t>{0, n};
+      next[static_cast<std::size_t>(part)] = std::clamp(first, begin, end);
+      stop[static_cast<std::size_t>(part)] = std::clamp(last, begin, end);
+    }
+    FFP_OMP(omp parallel if (parallel && ready))
+    for (int k = 0; k < count; ++k) {
+      const auto part = static_cast<std::size_t>((team_member() + k) % count);
+      for (std::size_t first; (first = next[part].fetch_add(batch)) < stop[part];)
+        fn(first, std::min(stop[part], first + batch));
     }
   }
 

@@ -154,37 +154,35 @@ void update_stresses(Simulation& s) {
   constexpr std::size_t chunk = 512;
   std::vector<Voigt>& stress = s.particles.stress;
   std::vector<Voigt>& strain = s.particles.strain;
-  const std::size_t n = s.particles.size();
   for (MaterialGroup& g : s.groups) {
     if (g.begin >= s.main_step_end) continue;  // a subcycled body: stressed in its own substeps
-    // Each thread its own part's particles (mpm/particle_bins.hpp), in batches.
-    s.bins.for_each_particle_range(
-        g.begin, g.end, n, g.size() >= kParallelMinimum, [&](std::size_t from, std::size_t to) {
-          for (std::size_t first = from; first < to; first += chunk) {
-            const std::size_t last = std::min(to, first + chunk);
+    // Balanced batches (ParticleBins::for_each_particle_batch): a plastic return costs
+    // several elastic updates, and the returns gather about the cone, in one part.
+    s.bins.for_each_particle_batch(
+        g.begin, g.end, s.particles.size(), chunk, g.size() >= kParallelMinimum,
+        [&](std::size_t first, std::size_t last) {
+          for (std::size_t p = first; p < last; ++p) {
+            Voigt& sig = stress[p];
+            const double w = s.spin_dt[p];
+            const double rr = sig[0], zz = sig[1], rz = sig[3];
+            sig[0] = rr + 2.0 * w * rz;
+            sig[1] = zz - 2.0 * w * rz;
+            sig[3] = rz + w * (zz - rr);
+            strain[p] += s.strain_increment[p];  // after smoothing: the strain the law sees
+          }
+          g.update(first, last, stress, s.strain_increment, s.dt_s);
+          if (g.disconnected_below_kg_m3 > 0.0) {
+            // ρ_p = m_p/V_p < ρ_disconnected: the grains no longer touch, σ = 0, and
+            // V_p is held at m_p/ρ_disconnected: grains apart take up no more room
+            // than their loosest packing when they meet again. Without it, particles
+            // pushed off the axis to the shaft grew to J = V/V0 = 10, 20 and 36 at
+            // h = 1, 0.5 and 0.25 cm (their hoop stretch r/r0 ∝ 1/h), and a
+            // re-compacted one stayed stress-free long after its grains touched.
+            const double limit = g.disconnected_below_kg_m3;
             for (std::size_t p = first; p < last; ++p) {
-              Voigt& sig = stress[p];
-              const double w = s.spin_dt[p];
-              const double rr = sig[0], zz = sig[1], rz = sig[3];
-              sig[0] = rr + 2.0 * w * rz;
-              sig[1] = zz - 2.0 * w * rz;
-              sig[3] = rz + w * (zz - rr);
-              strain[p] += s.strain_increment[p];  // after smoothing: the strain the law sees
-            }
-            g.update(first, last, stress, s.strain_increment, s.dt_s);
-            if (g.disconnected_below_kg_m3 > 0.0) {
-              // ρ_p = m_p/V_p < ρ_disconnected: the grains no longer touch, σ = 0, and
-              // V_p is held at m_p/ρ_disconnected: grains apart take up no more room
-              // than their loosest packing when they meet again. Without it, particles
-              // pushed off the axis to the shaft grew to J = V/V0 = 10, 20 and 36 at
-              // h = 1, 0.5 and 0.25 cm (their hoop stretch r/r0 ∝ 1/h), and a
-              // re-compacted one stayed stress-free long after its grains touched.
-              const double limit = g.disconnected_below_kg_m3;
-              for (std::size_t p = first; p < last; ++p) {
-                if (s.particles.mass[p] <= limit * s.particles.volume[p]) {  // at the limit: still apart
-                  stress[p].setZero();
-                  s.particles.volume[p] = s.particles.mass[p] / limit;
-                }
+              if (s.particles.mass[p] <= limit * s.particles.volume[p]) {  // at the limit: still apart
+                stress[p].setZero();
+                s.particles.volume[p] = s.particles.mass[p] / limit;
               }
             }
           }
