@@ -24,7 +24,7 @@ namespace ffp {
 
 namespace fs = std::filesystem;
 
-std::string version_string() { return std::string("ffp ") + FFP_VERSION; }
+std::string version_string() { return "ffp " FFP_VERSION; }
 
 fs::path default_scenes_folder() {
   return fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
