@@ -22,14 +22,13 @@ std::uint8_t bits_of(Fixity f, std::uint8_t normal) {
   return 0;
 }
 
-/// ∫ N_i(x) w(x) dx over the hat of node i with w(x) = x (radial weight) or 1:
-/// on each neighbouring segment [x_i, x_n], ∫ N_i x dx = L (2 x_i + x_n)/6 and ∫ N_i dx = L/2.
-double hat_integral(const GridAxis& x, int i, bool radial) {
+/// ∫ N_i(r) r dr over the radial hat of node i: on each neighbouring segment [r_i, r_n],
+/// L (2 r_i + r_n)/6. (Unweighted, GridAxis::hat_integral.)
+double radial_hat_integral(const GridAxis& r, int i) {
   double sum = 0.0;
   for (const int n : {i - 1, i + 1}) {
-    if (n < 0 || n >= x.nodes()) continue;
-    const double length = std::abs(x.coordinate(n) - x.coordinate(i));
-    sum += radial ? length * (2.0 * x.coordinate(i) + x.coordinate(n)) / 6.0 : length / 2.0;
+    if (n < 0 || n >= r.nodes()) continue;
+    sum += std::abs(r.coordinate(n) - r.coordinate(i)) * (2.0 * r.coordinate(i) + r.coordinate(n)) / 6.0;
   }
   return sum;
 }
@@ -80,14 +79,14 @@ Dashpot dashpot(const AbsorbingNode& a, const GridAxis& r, const GridAxis& z, co
   Dashpot d{0.0, 0.0, 0.0, 0.0};
   const int sides_z = int{a.bottom} + int{a.top}, sides_r = int{a.inner} + int{a.outer};
   if (sides_z > 0) {
-    const double area = sides_z * hat_integral(r, a.i, true);
+    const double area = sides_z * radial_hat_integral(r, a.i);
     d.damping_z += normal * area;
     d.damping_r += tangential * area;
     d.stiffness_z += kSpringNormal * g_over_r * area;
     d.stiffness_r += kSpringTangential * g_over_r * area;
   }
   if (sides_r > 0) {
-    const double area = sides_r * r.coordinate(a.i) * hat_integral(z, a.j, false);
+    const double area = sides_r * r.coordinate(a.i) * z.hat_integral(a.j, z.front(), z.back());
     d.damping_r += normal * area;
     d.damping_z += tangential * area;
     d.stiffness_r += kSpringNormal * g_over_r * area;
