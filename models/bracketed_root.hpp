@@ -1,8 +1,9 @@
 #pragma once
 /// The one bracketed scalar root finder of the project: the Illinois variant of
 /// regula falsi (Dowell & Jarratt 1971). Superlinear, exact on a linear piece of
-/// f, and never leaves its bracket, which is why both the SSMC's softening return
-/// and the rigid penetrometer's contact velocity use it.
+/// f, and never leaves its bracket, which is why the rigid penetrometer's contact
+/// velocity uses it, and the SSMC's softening return takes the same steps one
+/// evaluation at a time (strain_softening_return.cpp, to interleave points).
 #include <cmath>
 
 namespace ffp {

@@ -51,6 +51,7 @@ struct ElasticTrial {
   bool planar = false;
   double major = 0.0, minor = 0.0;  ///< σ_1, σ_3 (planar only)
 
+  ElasticTrial() = default;
   ElasticTrial(const Voigt& stress, const Voigt& strain_increment, const ElasticStiffness& d) {
     const Voigt& de = strain_increment;
     const double lambda_tr = d.lambda * (de[0] + de[1] + de[2]);

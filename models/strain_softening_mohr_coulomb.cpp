@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "models/bracketed_root.hpp"
 #include "models/math_constants.hpp"
 #include "models/principal_stress.hpp"
 
@@ -130,98 +129,86 @@ ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& stra
     }
     return region;
   }
+  return update_general(stress, strain_increment, state, peak_friction);
+}
+
+ReturnRegion StrainSofteningMohrCoulomb::update_general(Voigt& stress, const Voigt& strain_increment, State& state,
+                                                        double peak_friction_rad) const {
   const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
-  if (surely_elastic(principal.values()[0], principal.values()[2], peak_friction, state.plastic_deviatoric_strain)) {
+  if (surely_elastic(principal.values()[0], principal.values()[2], peak_friction_rad,
+                     state.plastic_deviatoric_strain)) {
     stress = trial;
     return ReturnRegion::elastic;
   }
   Eigen::Vector3d returned;
-  const ReturnRegion region = plastic_return(principal.values(), peak_friction, mean_pressure(stress), state, returned);
+  const ReturnRegion region =
+      plastic_return(principal.values(), peak_friction_rad, mean_pressure(stress), state, returned);
   stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
-  return region;
-}
-
-ReturnRegion StrainSofteningMohrCoulomb::plastic_return(const Eigen::Vector3d& trial_values, double peak_friction_rad,
-                                                        double mean_pressure_Pa, State& state,
-                                                        Eigen::Vector3d& returned) const {
-  const Peaks pk{peak_friction_rad, peak_dilatancy_rad(mean_pressure_Pa)};
-  const double eta = parameters_.softening_factor;
-  const double decay_start = std::exp(-eta * state.plastic_deviatoric_strain);
-  const MohrCoulombStrength strength_start = strength(pk, decay_start);
-  if (!(strength_start.yield(trial_values) > 0.0)) return ReturnRegion::elastic;
-
-  // g(Δκ): plastic deviatoric strain of the return with the strength at κ_n + Δκ.
-  // The plastic strain is coaxial with the trial: Δε^p = D⁻¹(σ_tr − σ), so its
-  // deviatoric norm is √(2/3) |dev(σ_tr − σ)| / 2G.
-  ReturnRegion region = ReturnRegion::elastic;
-  auto plastic_strain = [&](const MohrCoulombStrength& s) {
-    returned = trial_values;
-    region = return_to_mohr_coulomb(returned, s, stiffness_);
-    Eigen::Vector3d correction = trial_values - returned;
-    correction.array() -= correction.mean();
-    return deviatoric_compliance_ * correction.norm();
-  };
-  auto residual = [&](double increment) {
-    return plastic_strain(strength(pk, decay_start * std::exp(-eta * increment))) - increment;
-  };
-
-  const double residual_start = plastic_strain(strength_start);  // r(0) = g(0)
-  double accepted = 0.0;
-  if (residual_start > 0.0) {
-    // Δκ to 1e-12 of the explicit estimate g(0), but never finer than the rounding of g itself.
-    const double rounding =
-        8.0 * std::numeric_limits<double>::epsilon() * deviatoric_compliance_ * trial_values.cwiseAbs().maxCoeff();
-    const double tolerance = 1e-12 * residual_start + rounding;
-    // r = g − Δκ falls from r(0) > 0 and is concave where g saturates with softening.
-    // From the explicit estimate Δκ = g(0) secants extrapolate from below the root:
-    // close to it in one or two steps (the step changes the strength by η Δκ ≪ 1),
-    // and past it on a concave r, which brackets the root. Whatever is not bracketed
-    // after a few steps takes the residual strength's bound below.
-    double low = 0.0;  // the largest Δκ with r > 0
-    double residual_low = residual_start;
-    double high = residual_start;
-    double residual_high = residual(high);
-    for (int step = 0; residual_high > tolerance && step < 4; ++step) {
-      const double next = high - residual_high * (high - low) / (residual_high - residual_low);
-      if (!(next > high)) break;  // r not falling: no extrapolation
-      low = high;
-      residual_low = residual_high;
-      high = next;
-      residual_high = residual(high);
-    }
-    if (std::abs(residual_high) <= tolerance) {
-      accepted = high;
-    } else {
-      if (!(residual_high < 0.0)) {
-        // Upper end: the return with the residual strength. Softening makes g grow
-        // with Δκ, so g(∞) usually bounds the root; widen if dilatancy decay says otherwise.
-        if (residual_high > 0.0) {
-          low = high;
-          residual_low = residual_high;
-        }
-        high = std::max(low, plastic_strain(residual_strength(pk)));
-        residual_high = residual(high);
-        for (int widen = 0; residual_high > 0.0 && widen < 60; ++widen) {
-          high = std::max(2.0 * high, high + residual_high);
-          residual_high = residual(high);
-        }
-      }
-      accepted = illinois_root(
-                     residual, high, residual_high, low, residual_low, tolerance,
-                     [tolerance](double) { return tolerance; }, 200)
-                     .x;
-    }
-  }
-  state.plastic_deviatoric_strain += accepted;
-  // `returned` and `region` are those of the last evaluation, at the accepted Δκ.
   return region;
 }
 
 void StrainSofteningMohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment,
                                         std::span<State> state, double dt_s) const {
   assert(stress.size() == strain_increment.size() && stress.size() == state.size());
-  for (std::size_t i = 0; i < stress.size(); ++i) update(stress[i], strain_increment[i], state[i], dt_s);
+  // Blocks of points: first the rates, trials and screens (as update() does per point),
+  // then the returns of the block's yielding points side by side (ReturnSearch).
+  constexpr std::size_t kBlock = kReturnBlock;
+  std::array<ElasticTrial, kBlock> trials;
+  std::array<ReturnSearch, kBlock> searches;
+  std::array<std::size_t, kBlock> point;  // the search's point in the span
+  std::array<unsigned char, kBlock> active;
+  for (std::size_t first = 0; first < stress.size(); first += kBlock) {
+    const std::size_t last = std::min(stress.size(), first + kBlock);
+    std::size_t yielding = 0;
+    for (std::size_t i = first; i < last; ++i) {
+      State& st = state[i];
+      if (dt_s > 0.0)
+        st.strain_rate_per_s =
+            parameters_.rate.smoothed_rate(st.strain_rate_per_s, deviatoric_strain(strain_increment[i]) / dt_s);
+      const double peak_friction = peak_friction_rad(st);
+      const ElasticTrial quick(stress[i], strain_increment[i], elastic_stiffness_);
+      if (!quick.planar) {
+        update_general(stress[i], strain_increment[i], st, peak_friction);
+        continue;
+      }
+      if (surely_elastic(quick.major, quick.minor, peak_friction, st.plastic_deviatoric_strain)) {
+        quick.store(stress[i]);
+        continue;
+      }
+      prepare_return(searches[yielding], quick.values(), peak_friction, mean_pressure(stress[i]), st);
+      trials[yielding] = quick;
+      point[yielding] = i;
+      active[yielding] = static_cast<unsigned char>(yielding);
+      ++yielding;
+    }
+    // Inside the surface at κ_n after all: elastic.
+    const std::size_t going_first = start_returns(searches.data(), active.data(), yielding);
+    for (std::size_t j = 0, k = 0; j < yielding; ++j) {
+      if (k < going_first && active[k] == j) {
+        ++k;
+      } else {
+        trials[j].store(stress[point[j]]);
+      }
+    }
+    // Rounds: one evaluation of each search still going (independent: overlapped),
+    // then each takes its answer; a finished one stores its stress.
+    for (std::size_t going = going_first; going > 0;) {
+      evaluate(searches.data(), active.data(), going);
+      std::size_t kept = 0;
+      for (std::size_t k = 0; k < going; ++k) {
+        const std::size_t j = active[k];
+        if (advance(searches[j])) {
+          active[kept++] = static_cast<unsigned char>(j);
+        } else if (searches[j].region == ReturnRegion::elastic) {
+          trials[j].store(stress[point[j]]);
+        } else {
+          trials[j].store_with_values(searches[j].returned, stress[point[j]]);
+        }
+      }
+      going = kept;
+    }
+  }
 }
 
 }  // namespace ffp

@@ -16,6 +16,13 @@
 /// The strain rate and the mean pressure for Bolton's ψ_p are taken explicitly:
 /// the rate of the current increment (after smoothing) and p' at the start of
 /// the increment.
+///
+/// The root search is a machine that asks for one evaluation of g at a time
+/// (ReturnSearch, strain_softening_return.cpp). Each evaluation is a chain of
+/// dependent latencies (exp, sin, the return's divisions, a square root), so
+/// the batch update runs the returns of a block of points side by side, one
+/// evaluation of each per round: the processor overlaps their chains. Each
+/// point's arithmetic is the same as alone, so the results are the same bits.
 #include <array>
 #include <optional>
 #include <span>
@@ -92,6 +99,44 @@ class StrainSofteningMohrCoulomb {
   /// the result is elastic.
   ReturnRegion plastic_return(const Eigen::Vector3d& trial_values, double peak_friction_rad, double mean_pressure_Pa,
                               State& state, Eigen::Vector3d& returned) const;
+
+  /// One plastic return in progress: the search for Δκ (strain_softening_return.cpp).
+  struct ReturnSearch {
+    enum class Phase : unsigned char { start, extrapolate, residual_bound, widen, illinois };
+    // The point.
+    Eigen::Vector3d trial;  ///< principal values, descending
+    Peaks peaks;
+    double decay_start;  ///< exp(−η κ_n)
+    State* state;
+    // The evaluation asked for: g with `given` if `with_given`, else r(Δκ) = g(Δκ) − Δκ at `increment`.
+    bool with_given;
+    MohrCoulombStrength given;
+    double increment;
+    // Its answer.
+    Eigen::Vector3d returned;
+    ReturnRegion region;
+    double value;
+    // The search: [low, high] with r(low) > 0 (the Illinois step's `other` and `newest`).
+    Phase phase;
+    int steps;  ///< extrapolations, widenings or Illinois steps so far
+    double tolerance, low, residual_low, high, residual_high;
+  };
+  /// Sets the search's point up.
+  void prepare_return(ReturnSearch& search, const Eigen::Vector3d& trial_values, double peak_friction_rad,
+                      double mean_pressure_Pa, State& state) const;
+  /// Starts searches[active[k]], k < count: the strength at κ_n, and the first evaluation
+  /// asked for; the searches whose trial is inside the surface there (elastic) are left
+  /// out of `active`. Returns how many stay.
+  std::size_t start_returns(ReturnSearch* searches, unsigned char* active, std::size_t count) const;
+  /// Answers the evaluations that searches[active[k]], k < count, ask for (count ≤ kReturnBlock).
+  void evaluate(ReturnSearch* searches, const unsigned char* active, std::size_t count) const;
+  static constexpr std::size_t kReturnBlock = 64;  ///< points whose returns run side by side
+  /// Takes the answer; true if the search asks for another evaluation, false when Δκ is
+  /// found (added to the state; `returned` and `region` then belong to it).
+  bool advance(ReturnSearch& search) const;
+  /// The update after the rate, for a trial that is not planar (the general principal frame).
+  ReturnRegion update_general(Voigt& stress, const Voigt& strain_increment, State& state,
+                              double peak_friction_rad) const;
 
   StrainSofteningParameters parameters_;
   PrincipalStiffness stiffness_;

@@ -307,3 +307,54 @@ TEST_CASE("SSMC randomized sweep stays finite and admissible", "[ssmc][sweep]") 
   CHECK(not_finite == 0);
   CHECK(violations == 0);
 }
+
+TEST_CASE("SSMC's batch update gives the point update's bits, returns interleaved or not", "[ssmc][batch]") {
+  // The batch runs the returns of a block of points side by side (one evaluation of each
+  // per round); every point must still take the same arithmetic as alone. Random laws
+  // (η from 1e-3 to 1e3, so that some returns need the residual bound, the widening and
+  // the Illinois steps), planar and general trials, elastic and plastic, in batches that
+  // cross the blocks' boundaries.
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  long compared = 0, plastic = 0;
+  for (int law_index = 0; law_index < 60; ++law_index) {
+    StrainSofteningParameters p = paper_sand();
+    p.friction_peak_rad = (20.0 + 45.0 * uniform(rng)) * kDegree;
+    p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
+    p.dilatancy_peak_rad = law_index % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
+    p.cohesion_peak_Pa = law_index % 2 == 0 ? 0.0 : 5e3 * uniform(rng);
+    p.cohesion_residual_Pa = p.cohesion_peak_Pa * uniform(rng);
+    p.softening_factor = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
+    if (law_index % 5 == 0) p.relative_density = uniform(rng);
+    if (law_index % 3 == 0) p.rate.alpha_phi = 0.2 * uniform(rng);
+    const StrainSofteningMohrCoulomb law(p);
+    const std::size_t n = 1 + static_cast<std::size_t>(300 * uniform(rng));
+    std::vector<Voigt> stress(n), increment(n);
+    std::vector<StrainSofteningMohrCoulomb::State> state(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      stress[i] = isotropic(-1e4 * uniform(rng)) + random_voigt(rng, 3e3);
+      increment[i] = random_voigt(rng, std::pow(10.0, -6.0 + 5.0 * uniform(rng)));
+      if (i % 3 != 0) {  // axisymmetric: θθ principal, as in the MPM
+        stress[i][4] = stress[i][5] = 0.0;
+        increment[i][4] = increment[i][5] = 0.0;
+      }
+      state[i] = {i % 7 == 0 ? 0.0 : uniform(rng), 100.0 * uniform(rng)};
+    }
+    std::vector<Voigt> one_by_one = stress;
+    std::vector<StrainSofteningMohrCoulomb::State> one_by_one_state = state;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (law.update(one_by_one[i], increment[i], one_by_one_state[i], 1e-4) != ReturnRegion::elastic) ++plastic;
+    }
+    law.update(std::span<Voigt>(stress), std::span<const Voigt>(increment),
+               std::span<StrainSofteningMohrCoulomb::State>(state), 1e-4);
+    for (std::size_t i = 0; i < n; ++i) {
+      CAPTURE(law_index, i);
+      REQUIRE(stress[i] == one_by_one[i]);  // exact: the same bits
+      REQUIRE(state[i].plastic_deviatoric_strain == one_by_one_state[i].plastic_deviatoric_strain);
+      REQUIRE(state[i].strain_rate_per_s == one_by_one_state[i].strain_rate_per_s);
+      ++compared;
+    }
+  }
+  CHECK(compared > 5000);
+  CHECK(plastic > compared / 4);
+}
