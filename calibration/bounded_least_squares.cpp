@@ -4,7 +4,11 @@
 #include <map>
 #include <stdexcept>
 
-#include <ceres/ceres.h>
+#include <ceres/cost_function.h>
+#include <ceres/iteration_callback.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+#include <ceres/types.h>
 #include <Eigen/Dense>
 
 namespace ffp {

@@ -9,7 +9,11 @@
 #include <memory>
 #include <sstream>
 
-#include <ceres/ceres.h>
+#include <ceres/cost_function.h>
+#include <ceres/iteration_callback.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+#include <ceres/types.h>
 
 #include "calibration/monotone_crossing.hpp"
 
