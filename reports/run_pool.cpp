@@ -86,7 +86,9 @@ std::string hex_key(const std::string& material) {
 void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
                   const std::vector<std::size_t>& pending, std::vector<RunOutcome>& outcomes,
                   const fs::path& cache_root) {
-  const fs::path batch = fs::absolute(cache_root / (".slurm-" + std::to_string(::getpid())));
+  static int arrays = 0;  // a report submits one array per round: each its own folder
+  const fs::path batch =
+      fs::absolute(cache_root / (".slurm-" + std::to_string(::getpid()) + "-" + std::to_string(arrays++)));
   fs::create_directories(batch);
   std::ostringstream commands;
   for (std::size_t t = 0; t < pending.size(); ++t) {
@@ -168,43 +170,103 @@ std::string program_identity(const fs::path& binary, const std::string& program_
 
 std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const fs::path& cache_root, const std::string& program_version, int jobs,
-                                Scheduler scheduler) {
+                                Scheduler scheduler, std::span<FollowUp> follow_ups) {
   fs::create_directories(cache_root);
   const std::string identity = program_identity(ffp_binary, program_version);
+  // The requests given, then the follow-ups' as they come (all_requests[i] ↔ outcomes[i]).
+  std::vector<RunRequest> all_requests = requests;
   std::vector<RunOutcome> outcomes(requests.size());
-  std::vector<std::size_t> pending;
+  std::vector<std::size_t> pending;  // to run; [next, end) not started yet
+  std::size_t next = 0, finished = 0;
+  std::vector<char> done;                             // finished or cached (a duplicate: see `original`)
+  std::vector<std::size_t> original;                  // a request's first request with the same key (itself if none)
   std::map<std::string, std::size_t> first_with_key;  // studies may share a run: run it once
-  std::vector<std::pair<std::size_t, std::size_t>> duplicates;
-  std::vector<double> expected_wall_s(requests.size());  // a shared run keeps the largest estimate
-  for (std::size_t i = 0; i < requests.size(); ++i) {
-    const std::string key = run_key(requests[i], identity);
-    const auto [it, inserted] = first_with_key.emplace(key, i);
-    expected_wall_s[it->second] = std::max(expected_wall_s[it->second], requests[i].expected_wall_s);
-    if (!inserted) {
-      duplicates.emplace_back(i, it->second);
-      continue;
+  std::vector<double> expected_wall_s;                // a shared run keeps the largest estimate
+  std::size_t duplicate_count = 0, cached = 0;
+  // Keys, duplicates and cache for all_requests[from, end); the new pending runs go
+  // among those not started yet, longest first (stable: else in the given order).
+  auto enqueue = [&](std::size_t from) {
+    const std::size_t n = all_requests.size();
+    outcomes.resize(n);
+    done.resize(n, 0);
+    original.resize(n);
+    expected_wall_s.resize(n, 0.0);
+    std::vector<std::size_t> fresh;
+    for (std::size_t i = from; i < n; ++i) {
+      const std::string key = run_key(all_requests[i], identity);
+      const auto [it, inserted] = first_with_key.emplace(key, i);
+      original[i] = it->second;
+      expected_wall_s[it->second] = std::max(expected_wall_s[it->second], all_requests[i].expected_wall_s);
+      if (!inserted) {
+        ++duplicate_count;
+        continue;
+      }
+      outcomes[i].out_dir = cache_root / (slug(all_requests[i].label) + "-" + key);
+      // Complete when its manifest is there (written last, then the folder renamed
+      // into place); summary.json alone marks a run cached before manifests.
+      if (fs::exists(outcomes[i].out_dir / kOutputManifest) || fs::exists(outcomes[i].out_dir / "summary.json")) {
+        outcomes[i].cached = true;
+        outcomes[i].exit_code = 0;
+        done[i] = 1;
+        ++cached;
+      } else {
+        fresh.push_back(i);
+      }
     }
-    outcomes[i].out_dir = cache_root / (slug(requests[i].label) + "-" + key);
-    // Complete when its manifest is there (written last, then the folder renamed
-    // into place); summary.json alone marks a run cached before manifests.
-    if (fs::exists(outcomes[i].out_dir / kOutputManifest) || fs::exists(outcomes[i].out_dir / "summary.json")) {
-      outcomes[i].cached = true;
-      outcomes[i].exit_code = 0;
-    } else {
-      pending.push_back(i);
+    pending.insert(pending.end(), fresh.begin(), fresh.end());
+    std::stable_sort(pending.begin() + static_cast<long>(next), pending.end(),
+                     [&](std::size_t a, std::size_t b) { return expected_wall_s[a] > expected_wall_s[b]; });
+    return fresh.size();
+  };
+  auto outcome_of = [&](std::size_t i) {
+    RunOutcome o = outcomes[original[i]];
+    if (original[i] != i) o.cached = true;
+    return o;
+  };
+  // The follow-ups whose inputs are all done make their runs; `index` keeps where they went.
+  std::vector<char> made(follow_ups.size(), 0);
+  std::vector<std::vector<std::size_t>> index(follow_ups.size());
+  auto make_follow_ups = [&](bool all_done) {
+    for (std::size_t f = 0; f < follow_ups.size(); ++f) {
+      if (made[f]) continue;
+      FollowUp& up = follow_ups[f];
+      bool ready = true;
+      for (std::size_t i = up.first; i < up.last && ready; ++i) ready = done[original[i]] != 0;
+      if (!ready && !all_done) continue;
+      made[f] = 1;
+      std::vector<RunOutcome> inputs;
+      for (std::size_t i = up.first; i < up.last; ++i) inputs.push_back(outcome_of(i));
+      up.requests = up.make(inputs);
+      const std::size_t from = all_requests.size();
+      all_requests.insert(all_requests.end(), up.requests.begin(), up.requests.end());
+      const std::size_t to_run = enqueue(from);
+      for (std::size_t i = from; i < all_requests.size(); ++i) index[f].push_back(i);
+      if (!up.requests.empty())
+        std::fprintf(stderr, "runs: %zu more that use the results of earlier runs, %zu to do\n", up.requests.size(),
+                     to_run);
     }
-  }
-  std::stable_sort(pending.begin(), pending.end(),
-                   [&](std::size_t a, std::size_t b) { return expected_wall_s[a] > expected_wall_s[b]; });
-  const std::size_t cached = requests.size() - duplicates.size() - pending.size();
+  };
+  auto finish = [&] {
+    for (std::size_t f = 0; f < follow_ups.size(); ++f) {
+      follow_ups[f].outcomes.clear();
+      for (const std::size_t i : index[f]) follow_ups[f].outcomes.push_back(outcome_of(i));
+    }
+    std::vector<RunOutcome> given(requests.size());
+    for (std::size_t i = 0; i < requests.size(); ++i) given[i] = outcome_of(i);
+    return given;
+  };
+
+  enqueue(0);
   std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
-  if (scheduler == Scheduler::slurm && !pending.empty()) {
-    run_on_slurm(ffp_binary, requests, pending, outcomes, cache_root);
-    for (const auto& [copy, original] : duplicates) {
-      outcomes[copy] = outcomes[original];
-      outcomes[copy].cached = true;
-    }
-    return outcomes;
+  if (scheduler == Scheduler::slurm) {
+    // One job array for the given runs, then one for the follow-ups' (they need the first's results).
+    if (!pending.empty()) run_on_slurm(ffp_binary, all_requests, pending, outcomes, cache_root);
+    std::fill(done.begin(), done.end(), 1);
+    next = pending.size();
+    make_follow_ups(true);
+    const std::vector<std::size_t> second(pending.begin() + static_cast<long>(next), pending.end());
+    if (!second.empty()) run_on_slurm(ffp_binary, all_requests, second, outcomes, cache_root);
+    return finish();
   }
 
   struct Running {
@@ -213,10 +275,9 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     fs::path log;
   };
   std::map<pid_t, Running> running;
-  std::size_t next = 0, finished = 0;
   std::vector<char*> child_environ;  // filled below, before the first launch
   auto launch = [&](std::size_t i) {
-    const RunRequest& r = requests[i];
+    const RunRequest& r = all_requests[i];
     std::vector<std::string> args = {ffp_binary.string(),          "run",    r.scene_file.string(), "--out",
                                      outcomes[i].out_dir.string(), "--quiet"};
     for (const auto& o : r.overrides) {
@@ -237,10 +298,17 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     if (rc != 0) {
       outcomes[i].exit_code = 127;
       outcomes[i].error = "could not start " + args[0];
+      done[i] = 1;
       ++finished;
       return;
     }
     running[pid] = Running{i, std::chrono::steady_clock::now(), log};
+  };
+  auto stop_running = [&] {
+    int status = 0;
+    for (const auto& [child, _] : running) ::kill(child, SIGTERM);
+    while (::waitpid(-1, &status, 0) > 0) {
+    }
   };
 
   const std::size_t parallel = static_cast<std::size_t>(std::max(1, jobs));
@@ -258,15 +326,14 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
   environment.push_back("FFP_RUN_POOL_PID=" + std::to_string(::getpid()));
   for (auto& e : environment) child_environ.push_back(e.data());
   child_environ.push_back(nullptr);
+  make_follow_ups(false);  // those whose inputs were all cached
   while (finished < pending.size()) {
     while (running.size() < parallel && next < pending.size()) launch(pending[next++]);
     if (running.empty()) continue;
     int status = 0;
     const pid_t pid = ::waitpid(-1, &status, 0);
     if (interrupt_requested()) {
-      for (const auto& [child, _] : running) ::kill(child, SIGTERM);
-      while (::waitpid(-1, &status, 0) > 0) {
-      }
+      stop_running();
       throw_if_interrupted();
     }
     if (pid < 0) {
@@ -275,22 +342,26 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     }
     auto it = running.find(pid);
     if (it == running.end()) continue;
-    RunOutcome& o = outcomes[it->second.index];
+    const std::size_t i = it->second.index;
+    RunOutcome& o = outcomes[i];
     o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     o.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.start).count();
     if (o.exit_code != 0) o.error = last_line(it->second.log);
     std::error_code ignored;
     if (o.exit_code == 0) fs::remove(it->second.log, ignored);
+    done[i] = 1;
     ++finished;
-    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, requests.size() - duplicates.size(),
-                 requests[it->second.index].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
+    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, all_requests.size() - duplicate_count,
+                 all_requests[i].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
     running.erase(it);
+    try {
+      make_follow_ups(false);
+    } catch (...) {
+      stop_running();  // a follow-up that cannot be made stops the report, and its runs with it
+      throw;
+    }
   }
-  for (const auto& [copy, original] : duplicates) {
-    outcomes[copy] = outcomes[original];
-    outcomes[copy].cached = true;
-  }
-  return outcomes;
+  return finish();
 }
 
 }  // namespace ffp

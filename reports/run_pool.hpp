@@ -3,6 +3,8 @@
 /// cache keyed by the scene's content and the program version. Each run is a
 /// separate process so a study can be handed to a cluster scheduler unchanged.
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,12 +42,26 @@ std::string program_identity(const std::filesystem::path& binary, const std::str
 /// Slurm job array (one task per run, sbatch from this machine, then waited for).
 enum class Scheduler { local, slurm };
 
+/// Runs that need the outcomes of others (a study's follow-up: e.g. an FFP with the η
+/// that its calibration runs fitted). `make` is called once, when every request in
+/// [first, last) has finished (on the pool's thread, with their outcomes in order),
+/// and the runs it gives join the queue at once, while the others still run.
+struct FollowUp {
+  std::size_t first = 0, last = 0;
+  std::function<std::vector<RunRequest>(const std::vector<RunOutcome>&)> make;
+  // Filled by run_all: the runs `make` gave and their outcomes, in its order.
+  std::vector<RunRequest> requests;
+  std::vector<RunOutcome> outcomes;
+};
+
 /// Run every request (at most `jobs` at once) into cache_root/<label-slug>-<key>/
 /// (key: run_key with program_identity(ffp_binary, program_version)),
 /// skipping those whose summary.json already exists; the longest expected runs
-/// start first, the others in the given order. Progress lines go to stderr.
+/// start first, the others in the given order, and so do the follow-ups' runs
+/// among those not started yet. Progress lines go to stderr. On Slurm the
+/// follow-ups' runs are a second job array, after the first.
 std::vector<RunOutcome> run_all(const std::filesystem::path& ffp_binary, const std::vector<RunRequest>& requests,
                                 const std::filesystem::path& cache_root, const std::string& program_version, int jobs,
-                                Scheduler scheduler = Scheduler::local);
+                                Scheduler scheduler = Scheduler::local, std::span<FollowUp> follow_ups = {});
 
 }  // namespace ffp

@@ -68,30 +68,34 @@ int command_report(const ReportOptions& options) {
       std::erase_if(studies, [&](const Study& s) { return s.title.find(only) == std::string::npos; });
       if (studies.empty()) throw SceneError("--only: no study title contains '" + only + "'");
     }
-    // Two rounds: every study's own runs, then the runs that need their results.
+    // Every study's own runs, and the runs that need their results (a study's
+    // follow-up), made as soon as that study's runs are done, while the others run.
     std::vector<RunRequest> all;
     for (const auto& s : studies) all.insert(all.end(), s.runs.begin(), s.runs.end());
     std::fprintf(stderr, "report: %zu studies, %zu runs\n", studies.size(), all.size());
-    const std::vector<RunOutcome> first = run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs, scheduler);
+    std::vector<FollowUp> follow_ups;
+    std::vector<std::size_t> follow_up_of(studies.size(), studies.size());  // study → its follow_ups entry
+    for (std::size_t k = 0, offset = 0; k < studies.size(); offset += studies[k].runs.size(), ++k) {
+      if (!studies[k].follow_up) continue;
+      follow_up_of[k] = follow_ups.size();
+      follow_ups.push_back({offset,
+                            offset + studies[k].runs.size(),
+                            [&studies, k](const std::vector<RunOutcome>& outcomes) {
+                              return studies[k].follow_up(StudyResults(studies[k].runs, outcomes));
+                            },
+                            {},
+                            {}});
+    }
+    const std::vector<RunOutcome> first =
+        run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs, scheduler, follow_ups);
     std::vector<StudyResults> results;
-    std::vector<std::vector<RunRequest>> follow_ups(studies.size());
-    std::vector<RunRequest> second_round;
     for (std::size_t k = 0, offset = 0; k < studies.size(); offset += studies[k].runs.size(), ++k) {
       const auto begin = first.begin() + static_cast<long>(offset);
       results.emplace_back(studies[k].runs,
                            std::vector<RunOutcome>(begin, begin + static_cast<long>(studies[k].runs.size())));
-      if (studies[k].follow_up) follow_ups[k] = studies[k].follow_up(results.back());
-      second_round.insert(second_round.end(), follow_ups[k].begin(), follow_ups[k].end());
-    }
-    if (!second_round.empty()) {
-      std::fprintf(stderr, "report: %zu runs that use the results above\n", second_round.size());
-      const std::vector<RunOutcome> second =
-          run_all("/proc/self/exe", second_round, cache, FFP_VERSION, jobs, scheduler);
-      for (std::size_t k = 0, offset = 0; k < studies.size(); offset += follow_ups[k].size(), ++k) {
-        if (follow_ups[k].empty()) continue;
-        const auto begin = second.begin() + static_cast<long>(offset);
-        results[k] = results[k].extended(
-            follow_ups[k], std::vector<RunOutcome>(begin, begin + static_cast<long>(follow_ups[k].size())));
+      if (follow_up_of[k] < follow_ups.size() && !follow_ups[follow_up_of[k]].requests.empty()) {
+        const FollowUp& up = follow_ups[follow_up_of[k]];
+        results[k] = results[k].extended(up.requests, up.outcomes);
       }
     }
 

@@ -108,3 +108,52 @@ TEST_CASE("the runs expected to take longest start first, the others in the give
   CHECK(written(0) < written(2));
   CHECK(outcomes[3].out_dir == outcomes[1].out_dir);
 }
+
+TEST_CASE("a follow-up's runs start once its inputs are done, before the runs that do not concern it", "[reports]") {
+  // One at a time: "input" first (longest), then the follow-up's run, made from the
+  // input's outcome, goes ahead of "other" (expected longer than it, but queued later
+  // only if it were a second round).
+  Scratch s;
+  const fs::path scene = fs::path(FFP_SOURCE_DIR) / "data/scenes/triaxial_mc.json";
+  std::vector<RunRequest> requests = {{"input", scene, {"material.phi_peak_deg=30"}, 10.0},
+                                      {"other", scene, {"material.phi_peak_deg=35"}, 5.0},
+                                      {"later", scene, {"material.phi_peak_deg=36"}, 1.0}};
+  std::vector<ffp::FollowUp> follow_ups(2);
+  int made = 0;
+  follow_ups[0] = {0, 1, [&](const std::vector<ffp::RunOutcome>& inputs) {
+                     ++made;
+                     REQUIRE(inputs.size() == 1);
+                     CHECK(inputs[0].exit_code == 0);
+                     CHECK(fs::exists(inputs[0].out_dir / "summary.json"));  // its results are there to read
+                     return std::vector<RunRequest>{{"made from input", scene, {"material.phi_peak_deg=31"}, 7.0},
+                                                    {"shared", scene, {"material.phi_peak_deg=36"}, 0.0}};
+                   }};
+  follow_ups[1] = {1, 3, [&](const std::vector<ffp::RunOutcome>& inputs) {
+                     ++made;
+                     CHECK(inputs.size() == 2);
+                     return std::vector<RunRequest>{};
+                   }};
+  const auto outcomes = ffp::run_all(FFP_BINARY, requests, s.dir / "cache", "v1", 1, ffp::Scheduler::local, follow_ups);
+  CHECK(made == 2);
+  REQUIRE(outcomes.size() == 3);
+  REQUIRE(follow_ups[0].requests.size() == 2);
+  REQUIRE(follow_ups[0].outcomes.size() == 2);
+  CHECK(follow_ups[1].outcomes.empty());
+  for (const auto& o : follow_ups[0].outcomes) CHECK(o.exit_code == 0);
+  auto written = [](const ffp::RunOutcome& o) { return fs::last_write_time(o.out_dir / "summary.json"); };
+  CHECK(written(outcomes[0]) < written(follow_ups[0].outcomes[0]));
+  CHECK(written(follow_ups[0].outcomes[0]) < written(outcomes[1]));
+  // A follow-up's run equal to a given one runs once.
+  CHECK(follow_ups[0].outcomes[1].out_dir == outcomes[2].out_dir);
+  CHECK(follow_ups[0].outcomes[1].cached);
+
+  // Again: everything from the cache, the follow-ups made all the same.
+  std::vector<ffp::FollowUp> again = {follow_ups[0]};
+  again[0].requests.clear();
+  again[0].outcomes.clear();
+  const auto cached = ffp::run_all(FFP_BINARY, requests, s.dir / "cache", "v1", 1, ffp::Scheduler::local, again);
+  CHECK(made == 3);
+  REQUIRE(again[0].outcomes.size() == 2);
+  CHECK(again[0].outcomes[0].cached);
+  CHECK(again[0].outcomes[0].out_dir == follow_ups[0].outcomes[0].out_dir);
+}
