@@ -107,29 +107,9 @@ double StrainSofteningMohrCoulomb::output(const State& state, double mean_pressu
 
 ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& strain_increment, State& state,
                                                 double dt_s) const {
-  if (dt_s > 0.0)
-    state.strain_rate_per_s =
-        parameters_.rate.smoothed_rate(state.strain_rate_per_s, deviatoric_strain(strain_increment) / dt_s);
-  // Most points of an MPM step are well inside the surface: screened without exp or
-  // trigonometry, and (θθ principal) without the principal-space object (ElasticTrial),
-  // on whose scalar principal values a yielding planar point also returns (the same
-  // bits as PrincipalStresses, as in MohrCoulomb's batch).
-  const double peak_friction = peak_friction_rad(state);
-  if (const ElasticTrial quick(stress, strain_increment, elastic_stiffness_); quick.planar) {
-    if (surely_elastic(quick.major, quick.minor, peak_friction, state.plastic_deviatoric_strain)) {
-      quick.store(stress);
-      return ReturnRegion::elastic;
-    }
-    Eigen::Vector3d returned;
-    const ReturnRegion region = plastic_return(quick.values(), peak_friction, mean_pressure(stress), state, returned);
-    if (region == ReturnRegion::elastic) {
-      quick.store(stress);
-    } else {
-      quick.store_with_values(returned, stress);
-    }
-    return region;
-  }
-  return update_general(stress, strain_increment, state, peak_friction);
+  ReturnRegion region = ReturnRegion::elastic;
+  update_block({&stress, 1}, {&strain_increment, 1}, {&state, 1}, dt_s, &region);
+  return region;
 }
 
 ReturnRegion StrainSofteningMohrCoulomb::update_general(Voigt& stress, const Voigt& strain_increment, State& state,
@@ -151,63 +131,79 @@ ReturnRegion StrainSofteningMohrCoulomb::update_general(Voigt& stress, const Voi
 void StrainSofteningMohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment,
                                         std::span<State> state, double dt_s) const {
   assert(stress.size() == strain_increment.size() && stress.size() == state.size());
-  // Blocks of points: first the rates, trials and screens (as update() does per point),
-  // then the returns of the block's yielding points side by side (ReturnSearch).
-  constexpr std::size_t kBlock = kReturnBlock;
-  std::array<ElasticTrial, kBlock> trials;
-  std::array<ReturnSearch, kBlock> searches;
-  std::array<std::size_t, kBlock> point;  // the search's point in the span
-  std::array<unsigned char, kBlock> active;
-  for (std::size_t first = 0; first < stress.size(); first += kBlock) {
-    const std::size_t last = std::min(stress.size(), first + kBlock);
-    std::size_t yielding = 0;
-    for (std::size_t i = first; i < last; ++i) {
-      State& st = state[i];
-      if (dt_s > 0.0)
-        st.strain_rate_per_s =
-            parameters_.rate.smoothed_rate(st.strain_rate_per_s, deviatoric_strain(strain_increment[i]) / dt_s);
-      const double peak_friction = peak_friction_rad(st);
-      const ElasticTrial quick(stress[i], strain_increment[i], elastic_stiffness_);
-      if (!quick.planar) {
-        update_general(stress[i], strain_increment[i], st, peak_friction);
-        continue;
-      }
-      if (surely_elastic(quick.major, quick.minor, peak_friction, st.plastic_deviatoric_strain)) {
-        quick.store(stress[i]);
-        continue;
-      }
-      prepare_return(searches[yielding], quick.values(), peak_friction, mean_pressure(stress[i]), st);
-      trials[yielding] = quick;
-      point[yielding] = i;
-      active[yielding] = static_cast<unsigned char>(yielding);
-      ++yielding;
+  for (std::size_t first = 0; first < stress.size(); first += kReturnBlock) {
+    const std::size_t n = std::min(kReturnBlock, stress.size() - first);
+    update_block(stress.subspan(first, n), strain_increment.subspan(first, n), state.subspan(first, n), dt_s, nullptr);
+  }
+}
+
+void StrainSofteningMohrCoulomb::update_block(std::span<Voigt> stress, std::span<const Voigt> strain_increment,
+                                              std::span<State> state, double dt_s, ReturnRegion* regions) const {
+  assert(stress.size() <= kReturnBlock);
+  auto set_region = [regions](std::size_t i, ReturnRegion region) {
+    if (regions != nullptr) regions[i] = region;
+  };
+  // First the rates, trials and screens, then the returns of the yielding points side
+  // by side (ReturnSearch). Most points of an MPM step are well inside the surface:
+  // screened without exp or trigonometry, and (θθ principal) without the principal-space
+  // object (ElasticTrial), on whose scalar principal values a yielding planar point also
+  // returns (the same bits as PrincipalStresses, as in MohrCoulomb's batch).
+  std::array<ElasticTrial, kReturnBlock> trials;
+  std::array<ReturnSearch, kReturnBlock> searches;
+  std::array<std::size_t, kReturnBlock> point;  // the search's point in the block
+  std::array<unsigned char, kReturnBlock> active;
+  std::size_t yielding = 0;
+  for (std::size_t i = 0; i < stress.size(); ++i) {
+    State& st = state[i];
+    if (dt_s > 0.0)
+      st.strain_rate_per_s =
+          parameters_.rate.smoothed_rate(st.strain_rate_per_s, deviatoric_strain(strain_increment[i]) / dt_s);
+    const double peak_friction = peak_friction_rad(st);
+    const ElasticTrial quick(stress[i], strain_increment[i], elastic_stiffness_);
+    if (!quick.planar) {
+      set_region(i, update_general(stress[i], strain_increment[i], st, peak_friction));
+      continue;
     }
-    // Inside the surface at κ_n after all: elastic.
-    const std::size_t going_first = start_returns(searches.data(), active.data(), yielding);
-    for (std::size_t j = 0, k = 0; j < yielding; ++j) {
-      if (k < going_first && active[k] == j) {
-        ++k;
-      } else {
+    if (surely_elastic(quick.major, quick.minor, peak_friction, st.plastic_deviatoric_strain)) {
+      quick.store(stress[i]);
+      set_region(i, ReturnRegion::elastic);
+      continue;
+    }
+    prepare_return(searches[yielding], quick.values(), peak_friction, mean_pressure(stress[i]), st);
+    trials[yielding] = quick;
+    point[yielding] = i;
+    active[yielding] = static_cast<unsigned char>(yielding);
+    ++yielding;
+  }
+  // Inside the surface at κ_n after all: elastic.
+  const std::size_t going_first = start_returns(searches.data(), active.data(), yielding);
+  for (std::size_t j = 0, k = 0; j < yielding; ++j) {
+    if (k < going_first && active[k] == j) {
+      ++k;
+    } else {
+      trials[j].store(stress[point[j]]);
+      set_region(point[j], ReturnRegion::elastic);
+    }
+  }
+  // Rounds: one evaluation of each search still going (independent: overlapped),
+  // then each takes its answer; a finished one stores its stress.
+  for (std::size_t going = going_first; going > 0;) {
+    evaluate(searches.data(), active.data(), going);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < going; ++k) {
+      const std::size_t j = active[k];
+      if (advance(searches[j])) {
+        active[kept++] = static_cast<unsigned char>(j);
+        continue;
+      }
+      if (searches[j].region == ReturnRegion::elastic) {
         trials[j].store(stress[point[j]]);
+      } else {
+        trials[j].store_with_values(searches[j].returned, stress[point[j]]);
       }
+      set_region(point[j], searches[j].region);
     }
-    // Rounds: one evaluation of each search still going (independent: overlapped),
-    // then each takes its answer; a finished one stores its stress.
-    for (std::size_t going = going_first; going > 0;) {
-      evaluate(searches.data(), active.data(), going);
-      std::size_t kept = 0;
-      for (std::size_t k = 0; k < going; ++k) {
-        const std::size_t j = active[k];
-        if (advance(searches[j])) {
-          active[kept++] = static_cast<unsigned char>(j);
-        } else if (searches[j].region == ReturnRegion::elastic) {
-          trials[j].store(stress[point[j]]);
-        } else {
-          trials[j].store_with_values(searches[j].returned, stress[point[j]]);
-        }
-      }
-      going = kept;
-    }
+    going = kept;
   }
 }
 

@@ -134,6 +134,10 @@ class StrainSofteningMohrCoulomb {
   /// Takes the answer; true if the search asks for another evaluation, false when Δκ is
   /// found (added to the state; `returned` and `region` then belong to it).
   bool advance(ReturnSearch& search) const;
+  /// Up to kReturnBlock points: the update of each, as update() does, with the returns of
+  /// the yielding ones side by side; each point's region into regions[i] unless null.
+  void update_block(std::span<Voigt> stress, std::span<const Voigt> strain_increment, std::span<State> state,
+                    double dt_s, ReturnRegion* regions) const;
   /// The update after the rate, for a trial that is not planar (the general principal frame).
   ReturnRegion update_general(Voigt& stress, const Voigt& strain_increment, State& state,
                               double peak_friction_rad) const;

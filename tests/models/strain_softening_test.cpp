@@ -26,6 +26,24 @@ StrainSofteningParameters paper_sand() {
   return p;
 }
 
+/// A random SSMC law, the n-th of a sweep: φ'_p 1–70°, φ'_r below it, ψ_p 0 in one
+/// law of four, c' 0 in one of two, η 1e-3–1e3 (log-uniform), ν' 0–0.49, Bolton in one
+/// of five and the rate law in one of three.
+StrainSofteningParameters random_sand(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  StrainSofteningParameters p = paper_sand();
+  p.friction_peak_rad = (1.0 + 69.0 * uniform(rng)) * kDegree;
+  p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
+  p.dilatancy_peak_rad = n % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
+  p.cohesion_peak_Pa = n % 2 == 0 ? 0.0 : 5e3 * uniform(rng);
+  p.cohesion_residual_Pa = p.cohesion_peak_Pa * uniform(rng);
+  p.softening_factor = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
+  p.elastic.poisson_ratio = 0.49 * uniform(rng);
+  if (n % 5 == 0) p.relative_density = uniform(rng);
+  if (n % 3 == 0) p.rate.alpha_phi = 0.2 * uniform(rng);
+  return p;
+}
+
 Voigt plastic_strain(const ElasticConstants& e, const Voigt& strain_increment, const Voigt& stress_increment) {
   Voigt elastic = deviator(stress_increment) / (2.0 * e.shear_modulus());
   for (int i = 0; i < 3; ++i) elastic[i] += trace(stress_increment) / (9.0 * e.bulk_modulus());
@@ -279,16 +297,7 @@ TEST_CASE("SSMC randomized sweep stays finite and admissible", "[ssmc][sweep]") 
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   long violations = 0, not_finite = 0;
   for (int n = 0; n < 20000; ++n) {
-    StrainSofteningParameters p = paper_sand();
-    p.friction_peak_rad = (1.0 + 69.0 * uniform(rng)) * kDegree;
-    p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
-    p.dilatancy_peak_rad = n % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
-    p.cohesion_peak_Pa = n % 2 == 0 ? 0.0 : 5e3 * uniform(rng);
-    p.cohesion_residual_Pa = p.cohesion_peak_Pa * uniform(rng);
-    p.softening_factor = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
-    p.elastic.poisson_ratio = 0.49 * uniform(rng);
-    if (n % 5 == 0) p.relative_density = uniform(rng);
-    if (n % 3 == 0) p.rate.alpha_phi = 0.2 * uniform(rng);
+    const StrainSofteningParameters p = random_sand(rng, n);
     const StrainSofteningMohrCoulomb law(p);
     StrainSofteningMohrCoulomb::State state;
     state.plastic_deviatoric_strain = n % 7 == 0 ? 0.0 : uniform(rng);
@@ -318,16 +327,7 @@ TEST_CASE("SSMC's batch update gives the point update's bits, returns interleave
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   long compared = 0, plastic = 0;
   for (int law_index = 0; law_index < 60; ++law_index) {
-    StrainSofteningParameters p = paper_sand();
-    p.friction_peak_rad = (20.0 + 45.0 * uniform(rng)) * kDegree;
-    p.friction_residual_rad = p.friction_peak_rad * uniform(rng);
-    p.dilatancy_peak_rad = law_index % 4 == 0 ? 0.0 : p.friction_peak_rad * uniform(rng);
-    p.cohesion_peak_Pa = law_index % 2 == 0 ? 0.0 : 5e3 * uniform(rng);
-    p.cohesion_residual_Pa = p.cohesion_peak_Pa * uniform(rng);
-    p.softening_factor = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
-    if (law_index % 5 == 0) p.relative_density = uniform(rng);
-    if (law_index % 3 == 0) p.rate.alpha_phi = 0.2 * uniform(rng);
-    const StrainSofteningMohrCoulomb law(p);
+    const StrainSofteningMohrCoulomb law(random_sand(rng, law_index));
     const std::size_t n = 1 + static_cast<std::size_t>(300 * uniform(rng));
     std::vector<Voigt> stress(n), increment(n);
     std::vector<StrainSofteningMohrCoulomb::State> state(n);
