@@ -101,6 +101,8 @@ BENCHMARK(BM_MpmStep)
 // particles means the step is bound by arithmetic and scattered updates, not memory.
 BENCHMARK(BM_MpmStep)
     ->ArgNames({"gimp", "threads", "cells"})
+    ->Args({0, 1, 20})
+    ->Args({0, 1, 320})
     ->Args({1, 1, 20})
     ->Args({1, 1, 320})
     ->Unit(benchmark::kMillisecond)
