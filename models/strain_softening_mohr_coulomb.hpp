@@ -28,6 +28,7 @@
 #include <span>
 
 #include "models/bolton_dilatancy.hpp"
+#include "models/bracketed_root.hpp"
 #include "models/elastic.hpp"
 #include "models/friction_rate_law.hpp"
 #include "models/mohr_coulomb.hpp"
@@ -116,10 +117,12 @@ class StrainSofteningMohrCoulomb {
     Eigen::Vector3d returned;
     ReturnRegion region;
     double value;
-    // The search: [low, high] with r(low) > 0 (the Illinois step's `other` and `newest`).
+    // The search: newest = the last Δκ evaluated, other = the end kept below it
+    // (r > 0 while extrapolating and widening, then across the root).
     Phase phase;
     int steps;  ///< extrapolations, widenings or Illinois steps so far
-    double tolerance, low, residual_low, high, residual_high;
+    double tolerance;
+    IllinoisBracket bracket;
   };
   /// Sets the search's point up.
   void prepare_return(ReturnSearch& search, const Eigen::Vector3d& trial_values, double peak_friction_rad,

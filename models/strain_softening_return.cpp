@@ -88,6 +88,7 @@ void StrainSofteningMohrCoulomb::evaluate(ReturnSearch* searches, const unsigned
 bool StrainSofteningMohrCoulomb::advance(ReturnSearch& search) const {
   using Phase = ReturnSearch::Phase;
   ReturnSearch& s = search;
+  IllinoisBracket& b = s.bracket;
   auto ask_at = [&](double increment, Phase phase) {
     s.with_given = false;
     s.increment = increment;
@@ -98,14 +99,10 @@ bool StrainSofteningMohrCoulomb::advance(ReturnSearch& search) const {
     s.state->plastic_deviatoric_strain += increment;
     return false;  // `returned` and `region` are those of the last evaluation, at this Δκ
   };
-  // The Illinois variant of regula falsi (bracketed_root.hpp's illinois_root, step by
-  // step) between newest = high and other = low, up to 200 steps.
-  auto illinois_step = [&] {
-    return ask_at(s.high - s.residual_high * (s.high - s.low) / (s.residual_high - s.residual_low), Phase::illinois);
-  };
+  // illinois_root's steps (bracketed_root.hpp), one evaluation at a time, up to 200.
   auto start_illinois = [&] {
     s.steps = 0;
-    return std::abs(s.residual_high) <= s.tolerance ? accept(s.high) : illinois_step();
+    return std::abs(b.f_newest) <= s.tolerance ? accept(b.newest) : ask_at(b.secant(), Phase::illinois);
   };
 
   switch (s.phase) {
@@ -121,31 +118,31 @@ bool StrainSofteningMohrCoulomb::advance(ReturnSearch& search) const {
       // close to it in one or two steps (the step changes the strength by η Δκ ≪ 1),
       // and past it on a concave r, which brackets the root. Whatever is not bracketed
       // after a few steps takes the residual strength's bound below.
-      s.low = 0.0;  // the largest Δκ with r > 0
-      s.residual_low = residual_start;
-      s.high = residual_start;
+      b.other = 0.0;  // the largest Δκ with r > 0
+      b.f_other = residual_start;
+      b.newest = residual_start;
       s.steps = 0;
-      return ask_at(s.high, Phase::extrapolate);
+      return ask_at(b.newest, Phase::extrapolate);
     }
     case Phase::extrapolate: {
-      s.residual_high = s.value;
-      if (s.residual_high > s.tolerance && s.steps < 4) {
-        const double next = s.high - s.residual_high * (s.high - s.low) / (s.residual_high - s.residual_low);
-        if (next > s.high) {  // else r is not falling: no extrapolation
-          s.low = s.high;
-          s.residual_low = s.residual_high;
-          s.high = next;
+      b.f_newest = s.value;
+      if (b.f_newest > s.tolerance && s.steps < 4) {
+        const double next = b.secant();
+        if (next > b.newest) {  // else r is not falling: no extrapolation
+          b.other = b.newest;
+          b.f_other = b.f_newest;
+          b.newest = next;
           ++s.steps;
-          return ask_at(s.high, Phase::extrapolate);
+          return ask_at(b.newest, Phase::extrapolate);
         }
       }
-      if (std::abs(s.residual_high) <= s.tolerance) return accept(s.high);
-      if (s.residual_high < 0.0) return start_illinois();
+      if (std::abs(b.f_newest) <= s.tolerance) return accept(b.newest);
+      if (b.f_newest < 0.0) return start_illinois();
       // Upper end: the return with the residual strength. Softening makes g grow
       // with Δκ, so g(∞) usually bounds the root; widen if dilatancy decay says otherwise.
-      if (s.residual_high > 0.0) {
-        s.low = s.high;
-        s.residual_low = s.residual_high;
+      if (b.f_newest > 0.0) {
+        b.other = b.newest;
+        b.f_other = b.f_newest;
       }
       s.with_given = true;
       s.given = residual_strength(s.peaks);
@@ -153,30 +150,22 @@ bool StrainSofteningMohrCoulomb::advance(ReturnSearch& search) const {
       return true;
     }
     case Phase::residual_bound:
-      s.high = std::max(s.low, s.value);
+      b.newest = std::max(b.other, s.value);
       s.steps = 0;
-      return ask_at(s.high, Phase::widen);
+      return ask_at(b.newest, Phase::widen);
     case Phase::widen:
-      s.residual_high = s.value;
-      if (s.residual_high > 0.0 && s.steps < 60) {
-        s.high = std::max(2.0 * s.high, s.high + s.residual_high);
+      b.f_newest = s.value;
+      if (b.f_newest > 0.0 && s.steps < 60) {
+        b.newest = std::max(2.0 * b.newest, b.newest + b.f_newest);
         ++s.steps;
-        return ask_at(s.high, Phase::widen);
+        return ask_at(b.newest, Phase::widen);
       }
       return start_illinois();
     case Phase::illinois: {
-      const double next = s.increment, residual_next = s.value;
-      if ((residual_next > 0.0) != (s.residual_high > 0.0)) {
-        s.low = s.high;
-        s.residual_low = s.residual_high;
-      } else {
-        s.residual_low *= 0.5;
-      }
-      s.high = next;
-      s.residual_high = residual_next;
+      b.take(s.increment, s.value);
       ++s.steps;
-      const bool converged = std::abs(residual_next) <= s.tolerance || std::abs(s.high - s.low) <= s.tolerance;
-      return converged || s.steps >= 200 ? accept(next) : illinois_step();
+      const bool converged = std::abs(b.f_newest) <= s.tolerance || std::abs(b.newest - b.other) <= s.tolerance;
+      return converged || s.steps >= 200 ? accept(b.newest) : ask_at(b.secant(), Phase::illinois);
     }
   }
   return accept(0.0);  // unreachable: every phase is handled above
