@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/processor_name.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/scene/scene_error.hpp"
@@ -55,14 +56,18 @@ int command_bench(const BenchOptions& options) {
     std::error_code ignored;
     fs::remove_all(scratch, ignored);
 
-    std::printf("%s, %u hardware threads, median of %d runs (wall time inside the run, without process start)\n\n",
-                version_string().c_str(), std::thread::hardware_concurrency(), repeats);
     std::printf(
-        "| scene | wall time [s] | steps | steps/s | particles | particle-steps/s |\n|---|---|---|---|---|---|\n");
+        "%s on %s, %u hardware threads, median of %d run%s (wall time inside the run, without process start)\n\n",
+        version_string().c_str(), this_processor().c_str(), std::thread::hardware_concurrency(), repeats,
+        repeats == 1 ? "" : "s");
+    // The spread, (slowest − fastest)/median, says how far the machine moved between repeats.
+    std::printf(
+        "| scene | wall time [s] | spread [%%] | steps | steps/s | particles | particle-steps/s |\n"
+        "|---|---|---|---|---|---|---|\n");
     int failures = 0;
     for (std::size_t i = 0; i < requests.size(); ++i) {
       if (summaries[i].empty()) {
-        std::printf("| %s | FAILED | | | | |\n", requests[i].label.c_str());
+        std::printf("| %s | FAILED | | | | | |\n", requests[i].label.c_str());
         ++failures;
         continue;
       }
@@ -75,7 +80,11 @@ int command_bench(const BenchOptions& options) {
       if (particles > 0)
         std::snprintf(particle_columns, sizeof particle_columns, "%.0f | %.2f M", particles,
                       particles * steps / t / 1e6);
-      std::printf("| %s | %.3f | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, steps, steps / t,
+      char spread[32] = "–";
+      if (wall.size() > 1 && t > 0.0)
+        std::snprintf(spread, sizeof spread, "%.0f",
+                      100.0 * (*std::ranges::max_element(wall) - *std::ranges::min_element(wall)) / t);
+      std::printf("| %s | %.3f | %s | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, spread, steps, steps / t,
                   particle_columns);
     }
     return failures == 0 ? 0 : 1;
