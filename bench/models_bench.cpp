@@ -87,6 +87,17 @@ void mc_plane_return(benchmark::State& bench) {
   run(bench, start, [&](std::vector<Voigt>& s) { law.update(s, increments); });
 }
 
+/// The Mohr-Coulomb update where no point yields (increments a thousand times smaller
+/// than shearing_increments): its elastic screen alone, most of an MPM step's updates.
+void mc_elastic_screen(benchmark::State& bench) {
+  std::mt19937_64 rng(2);
+  const auto start = stresses(false, rng);
+  auto increments = shearing_increments(false, rng);
+  for (auto& e : increments) e *= 1e-3;
+  const MohrCoulomb law(paper_mc());
+  run(bench, start, [&](std::vector<Voigt>& s) { law.update(s, increments); });
+}
+
 void mc_apex_return(benchmark::State& bench) {
   std::mt19937_64 rng(3);
   const auto start = stresses(false, rng);
@@ -164,6 +175,7 @@ void ssmc_paper_sand(benchmark::State& bench) {
 
 BENCHMARK(elastic)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mc_plane_return)->Arg(0)->Arg(1)->ArgName("three_d")->Unit(benchmark::kMicrosecond);
+BENCHMARK(mc_elastic_screen)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mc_apex_return)->Unit(benchmark::kMicrosecond);
 BENCHMARK(ssmc_with_rate_law)->Arg(0)->Arg(1)->ArgName("three_d")->Unit(benchmark::kMicrosecond);
 BENCHMARK(ssmc_paper_sand)->Arg(0)->Arg(1)->Arg(2)->ArgName("mixed")->Unit(benchmark::kMicrosecond);
