@@ -23,9 +23,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The middle value; for an even count the mean of the two middle ones (two
+/// repeats gave the slower of the two before).
 double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
+  const std::size_t half = v.size() / 2;
+  return v.size() % 2 == 1 ? v[half] : 0.5 * (v[half - 1] + v[half]);
 }
 
 }  // namespace
