@@ -108,7 +108,8 @@ double StrainSofteningMohrCoulomb::output(const State& state, double mean_pressu
 ReturnRegion StrainSofteningMohrCoulomb::update(Voigt& stress, const Voigt& strain_increment, State& state,
                                                 double dt_s) const {
   ReturnRegion region = ReturnRegion::elastic;
-  update_block({&stress, 1}, {&strain_increment, 1}, {&state, 1}, dt_s, &region);
+  // A block of one: its work arrays hold one point, not kReturnBlock to initialise per call.
+  update_block<1>({&stress, 1}, {&strain_increment, 1}, {&state, 1}, dt_s, &region);
   return region;
 }
 
@@ -133,13 +134,16 @@ void StrainSofteningMohrCoulomb::update(std::span<Voigt> stress, std::span<const
   assert(stress.size() == strain_increment.size() && stress.size() == state.size());
   for (std::size_t first = 0; first < stress.size(); first += kReturnBlock) {
     const std::size_t n = std::min(kReturnBlock, stress.size() - first);
-    update_block(stress.subspan(first, n), strain_increment.subspan(first, n), state.subspan(first, n), dt_s, nullptr);
+    update_block<kReturnBlock>(stress.subspan(first, n), strain_increment.subspan(first, n), state.subspan(first, n),
+                               dt_s, nullptr);
   }
 }
 
+template <std::size_t Capacity>
 void StrainSofteningMohrCoulomb::update_block(std::span<Voigt> stress, std::span<const Voigt> strain_increment,
                                               std::span<State> state, double dt_s, ReturnRegion* regions) const {
-  assert(stress.size() <= kReturnBlock);
+  static_assert(Capacity <= kReturnBlock);
+  assert(stress.size() <= Capacity);
   auto set_region = [regions](std::size_t i, ReturnRegion region) {
     if (regions != nullptr) regions[i] = region;
   };
@@ -148,10 +152,10 @@ void StrainSofteningMohrCoulomb::update_block(std::span<Voigt> stress, std::span
   // screened without exp or trigonometry, and (θθ principal) without the principal-space
   // object (ElasticTrial), on whose scalar principal values a yielding planar point also
   // returns (the same bits as PrincipalStresses, as in MohrCoulomb's batch).
-  std::array<ElasticTrial, kReturnBlock> trials;
-  std::array<ReturnSearch, kReturnBlock> searches;
-  std::array<std::size_t, kReturnBlock> point;  // the search's point in the block
-  std::array<unsigned char, kReturnBlock> active;
+  std::array<ElasticTrial, Capacity> trials;
+  std::array<ReturnSearch, Capacity> searches;
+  std::array<std::size_t, Capacity> point{};  // the search's point in the block
+  std::array<unsigned char, Capacity> active{};
   std::size_t yielding = 0;
   for (std::size_t i = 0; i < stress.size(); ++i) {
     State& st = state[i];

@@ -137,8 +137,10 @@ class StrainSofteningMohrCoulomb {
   /// Takes the answer; true if the search asks for another evaluation, false when Δκ is
   /// found (added to the state; `returned` and `region` then belong to it).
   bool advance(ReturnSearch& search) const;
-  /// Up to kReturnBlock points: the update of each, as update() does, with the returns of
+  /// Up to Capacity points: the update of each, as update() does, with the returns of
   /// the yielding ones side by side; each point's region into regions[i] unless null.
+  /// Capacity sizes the block's work arrays: 1 for update(), kReturnBlock for the batch.
+  template <std::size_t Capacity>
   void update_block(std::span<Voigt> stress, std::span<const Voigt> strain_increment, std::span<State> state,
                     double dt_s, ReturnRegion* regions) const;
   /// The update after the rate, for a trial that is not planar (the general principal frame).
