@@ -1,5 +1,5 @@
 #pragma once
-/// The processor a timing was taken on, for `ffp bench`'s header: times mean
+/// The processor a timing was taken on, for `ffp bench`'s header and the report's: times mean
 /// little without the machine (the same build runs 1.5–2 × apart on two EPYCs).
 #include <istream>
 #include <string>
