@@ -1,7 +1,9 @@
 #include "models/mohr_coulomb.hpp"
 
+#include <algorithm>
 #include <cassert>
 
+#include "models/elastic_screen.hpp"
 #include "models/principal_stress.hpp"
 
 namespace ffp {
@@ -26,29 +28,36 @@ ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) c
   return region;
 }
 
-// Most points of a batch stay elastic: their trial and yield value come from
-// ElasticTrial (the same bits as update() above) and the yield test decides; a point
-// that yields returns on ElasticTrial's principal values, without the principal-space
-// object (again the same bits); a general 3D point takes update().
+// Most points of a batch stay elastic: the elastic screen forms every trial and
+// tests it in vector lanes (screen_elastic_trials, the same bits as update() above),
+// block by block; a point that yields returns from its trial, on ElasticTrial's scalar
+// principal values without the principal-space object where θθ is principal (again
+// the same bits), through PrincipalStresses otherwise.
 void MohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const {
   assert(stress.size() == strain_increment.size());
-  const ElasticStiffness stiffness = elastic_stiffness_;  // copies: the stores below cannot change them
-  const MohrCoulombStrength strength = strength_;
-  for (std::size_t i = 0; i < stress.size(); ++i) {
-    const ElasticTrial trial(stress[i], strain_increment[i], stiffness);
-    if (!trial.planar) {
-      update(stress[i], strain_increment[i]);
-    } else if (!(strength.yield(trial.major, trial.minor) > 0.0)) {
-      trial.store(stress[i]);
-    } else {  // the return of update(), on the trial's scalar principal values
-      Eigen::Vector3d returned = trial.values();
-      if (return_to_mohr_coulomb(returned, strength, stiffness_) == ReturnRegion::elastic) {
-        trial.store(stress[i]);
-      } else {
-        trial.store_with_values(returned, stress[i]);
-      }
+  constexpr std::size_t kBlock = 64;
+  bool settled[kBlock];
+  for (std::size_t begin = 0; begin < stress.size(); begin += kBlock) {
+    const std::size_t n = std::min(kBlock, stress.size() - begin);
+    screen_elastic_trials(&stress[begin], &strain_increment[begin], n, elastic_stiffness_, strength_, settled);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!settled[k]) return_from_trial(stress[begin + k]);
     }
   }
+}
+
+void MohrCoulomb::return_from_trial(Voigt& stress) const {
+  const ElasticTrial trial(stress);
+  if (!trial.planar) {
+    const PrincipalStresses principal(stress);
+    Eigen::Vector3d returned = principal.values();
+    if (return_to_mohr_coulomb(returned, strength_, stiffness_) != ReturnRegion::elastic)
+      stress = principal.with_values(returned);
+    return;
+  }
+  Eigen::Vector3d returned = trial.values();
+  if (return_to_mohr_coulomb(returned, strength_, stiffness_) != ReturnRegion::elastic)
+    trial.store_with_values(returned, stress);
 }
 
 }  // namespace ffp

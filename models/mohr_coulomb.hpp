@@ -54,6 +54,9 @@ class MohrCoulomb {
   }
 
  private:
+  /// A point whose elastic trial (in `stress`) yields: the return onto the surface.
+  void return_from_trial(Voigt& stress) const;
+
   MohrCoulombParameters parameters_;
   MohrCoulombStrength strength_;
   PrincipalStiffness stiffness_;

@@ -61,14 +61,12 @@ struct ElasticTrial {
     rz = stress[3] + d.two_shear * de[3];
     zt = stress[4] + d.two_shear * de[4];
     rt = stress[5] + d.two_shear * de[5];
-    planar = zt == 0.0 && rt == 0.0;
-    if (planar) {
-      centre_ = 0.5 * (rr + zz);
-      half_difference_ = 0.5 * (rr - zz);
-      radius_ = std::sqrt(half_difference_ * half_difference_ + rz * rz);
-      major = std::max(centre_ + radius_, tt);  // PrincipalStresses' order: θθ above, between or below
-      minor = std::min(centre_ - radius_, tt);
-    }
+    decompose();
+  }
+  /// A trial already formed (screen_elastic_trials): the same bits as forming it here.
+  explicit ElasticTrial(const Voigt& trial)
+      : rr(trial[0]), zz(trial[1]), tt(trial[2]), rz(trial[3]), zt(trial[4]), rt(trial[5]) {
+    decompose();
   }
   void store(Voigt& out) const {
     out[0] = rr;
@@ -96,6 +94,17 @@ struct ElasticTrial {
   }
 
  private:
+  void decompose() {
+    planar = zt == 0.0 && rt == 0.0;
+    if (planar) {
+      centre_ = 0.5 * (rr + zz);
+      half_difference_ = 0.5 * (rr - zz);
+      radius_ = std::sqrt(half_difference_ * half_difference_ + rz * rz);
+      major = std::max(centre_ + radius_, tt);  // PrincipalStresses' order: θθ above, between or below
+      minor = std::min(centre_ - radius_, tt);
+    }
+  }
+
   double centre_ = 0.0, half_difference_ = 0.0, radius_ = 0.0;  ///< the trial's in-plane Mohr circle
 };
 

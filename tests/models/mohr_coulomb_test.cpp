@@ -263,21 +263,25 @@ TEST_CASE("P-wave speed comes from the constrained modulus", "[mc][elastic]") {
 }
 
 TEST_CASE("the batch update gives the single-point update's bits in every region, planar and 3D", "[mc][batch]") {
-  // The batch takes the elastic test and the return on ElasticTrial's scalar principal
-  // values where θθ is principal (the MPM): it must be the single-point update bit for bit.
+  // The batch takes the elastic test in vector lanes (screen_elastic_trials, four points
+  // at a time, the rest of a block of 64 one by one) and the return on ElasticTrial's
+  // scalar principal values where θθ is principal (the MPM): it must be the single-point
+  // update bit for bit, for batches of every length about the lanes and the block.
   std::mt19937_64 rng(4321);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const MohrCoulomb mc(sand(39.0, 5.0, 0.0));
   const MohrCoulomb cohesive(sand(30.0, 10.0, 5e3));
   std::array<long, 5> regions{};  // elastic, plane, compression edge, extension edge, apex
   long different = 0;
-  for (int n = 0; n < 40000; ++n) {
+  for (int n = 0; n < 6000; ++n) {
     const MohrCoulomb& law = n % 2 == 0 ? mc : cohesive;
-    std::vector<Voigt> stress(4), increment(4);
+    const std::size_t length = 1 + static_cast<std::size_t>(n) % 140;
+    std::vector<Voigt> stress(length), increment(length);
     for (std::size_t k = 0; k < stress.size(); ++k) {
-      stress[k] = n % 5 == 0 ? random_voigt(rng, 1e5) : isotropic(-1e5 * uniform(rng)) + random_voigt(rng, 3e4);
-      increment[k] = random_voigt(rng, (n % 3 == 0 ? 1e-2 : 1e-4) * uniform(rng));
-      if (n % 7 != 0) stress[k][4] = stress[k][5] = increment[k][4] = increment[k][5] = 0.0;  // θθ principal
+      const std::size_t m = static_cast<std::size_t>(n) + k;  // each lane of a batch its own kind of point
+      stress[k] = m % 5 == 0 ? random_voigt(rng, 1e5) : isotropic(-1e5 * uniform(rng)) + random_voigt(rng, 3e4);
+      increment[k] = random_voigt(rng, (m % 3 == 0 ? 1e-2 : 1e-4) * uniform(rng));
+      if (m % 7 != 0) stress[k][4] = stress[k][5] = increment[k][4] = increment[k][5] = 0.0;  // θθ principal
     }
     std::vector<Voigt> single = stress;
     for (std::size_t k = 0; k < stress.size(); ++k)
