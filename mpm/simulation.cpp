@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/voigt_lanes.hpp"
 #include "mpm/generate_particles.hpp"
 #include "mpm/stages.hpp"
 
@@ -99,6 +100,58 @@ struct SignalSpeed {
   long bad = 0;
 };
 
+/// A range's maxima for the CFL step: max 1/ρ, max |v|², max |σ| (a Gershgorin bound
+/// on the principal stresses of the (r, z) block, and σ_θθ), and how many particles have a
+/// non-finite state. Four particles per vector (models/voigt_lanes.hpp), the last ones
+/// one by one: the same maxima as one by one, since a maximum is exact in any order.
+struct SignalMaxima {
+  double stiffest = 0.0, speed2 = 0.0, stress = 0.0;
+  long bad = 0;
+};
+
+SignalMaxima signal_maxima(const Particles& p, std::size_t begin, std::size_t end) {
+  constexpr double kLargest = std::numeric_limits<double>::max();
+  SignalMaxima m;
+  std::size_t i = begin;
+  if (end - begin >= 4) {
+    Lanes stiffest{}, speed2{}, stress{};
+    LaneMask bad{};
+    for (; i + 4 <= end; i += 4) {
+      const Lanes inverse_density = load_lanes(&p.volume[i]) / load_lanes(&p.mass[i]);
+      const Lanes vr = load_lanes(&p.vr[i]), vz = load_lanes(&p.vz[i]);
+      const Lanes v2 = vr * vr + vz * vz;
+      Lanes sig[6];
+      to_lanes(p.stress[i].data(), sig);
+      const Lanes shear = abs_lanes(sig[3]);
+      const Lanes bound = max_lanes(max_lanes(abs_lanes(sig[0]) + shear, abs_lanes(sig[1]) + shear), abs_lanes(sig[2]));
+      bad -= ~(inverse_density > 0.0) | ~(abs_lanes(inverse_density) <= kLargest) | ~(abs_lanes(v2) <= kLargest) |
+             ~(abs_lanes(bound) <= kLargest);  // a true lane is −1
+      stiffest = max_lanes(stiffest, inverse_density);
+      speed2 = max_lanes(speed2, v2);
+      stress = max_lanes(stress, bound);
+    }
+    for (int k = 0; k < 4; ++k) {
+      m.stiffest = std::max(m.stiffest, stiffest[k]);
+      m.speed2 = std::max(m.speed2, speed2[k]);
+      m.stress = std::max(m.stress, stress[k]);
+      m.bad += bad[k];
+    }
+  }
+  for (; i < end; ++i) {
+    const double inverse_density = p.volume[i] / p.mass[i];
+    const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
+    const Voigt& sig = p.stress[i];
+    const double bound =
+        std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
+    if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
+      ++m.bad;
+    m.stiffest = std::max(m.stiffest, inverse_density);
+    m.speed2 = std::max(m.speed2, v2);
+    m.stress = std::max(m.stress, bound);
+  }
+  return m;
+}
+
 SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
   const Particles& p = s.particles;
   // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
@@ -116,19 +169,13 @@ SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
               if (ready && g.size() >= kParallelMinimum))
   for (int part = team_member(); part < parts; part += team_size()) {
     const auto [from, to] = ready ? s.bins.particle_range(part) : std::pair<std::size_t, std::size_t>{0, p.size()};
-    for (std::size_t i = std::max(from, g.begin); i < std::min(to, g.end); ++i) {
-      const double inverse_density = p.volume[i] / p.mass[i];
-      const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
-      const Voigt& sig = p.stress[i];
-      // Gershgorin bound on the principal stresses of the (r, z) block, and σ_θθ.
-      const double bound =
-          std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
-      if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
-        ++bad;
-      stiffest = std::max(stiffest, inverse_density);
-      speed2 = std::max(speed2, v2);
-      stress = std::max(stress, bound);
-    }
+    const std::size_t begin = std::max(from, g.begin), end = std::min(to, g.end);
+    if (begin >= end) continue;
+    const SignalMaxima m = signal_maxima(p, begin, end);
+    stiffest = std::max(stiffest, m.stiffest);
+    speed2 = std::max(speed2, m.speed2);
+    stress = std::max(stress, m.stress);
+    bad += m.bad;
   }
   // A disconnected particle is stress-free; it reconnects at the disconnection density.
   if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);

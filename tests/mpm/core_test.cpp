@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "mpm/diagnostics.hpp"
 #include "mpm/grid_axis.hpp"
@@ -140,6 +141,35 @@ TEST_CASE("time step follows the CFL limit and a fixed step above it stops the r
   m.solver.fixed_dt_s = 1.01 * s.dt_limit_s;
   Simulation fixed(m);
   CHECK_THROWS_AS(fixed.advance(), StepFailure);
+}
+
+TEST_CASE("the CFL maxima take each particle, in vector lanes or after them, and a non-finite one stops the run",
+          "[mpm][time_step]") {
+  // 3 × 1 cells of 3 × 3 particles: 27, so that the lanes of four take 24 and the last
+  // three go one by one. One particle at a time is made the fastest, the most stressed
+  // or non-finite; the limit must follow it wherever it sits.
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.1, 10);
+  m.z_nodes_m = testing::nodes(0.0, 0.2, 40);  // h_min = 5 mm
+  m.bodies.push_back(testing::elastic_body("b", 1e7, 0.25, 2000.0, BoxRegion{0, 0.03, 0, 0.005}, 0.0, 0.0, 3));
+  Simulation s(m);
+  Particles& P = s.particles;
+  REQUIRE(P.size() == 27);
+  const double density = P.mass[0] / P.volume[0];
+  const double M = ElasticConstants{1e7, 0.25}.constrained_modulus();
+  const double c = std::sqrt(M / density);
+  CHECK(cfl_time_step_limit(s) == Approx(0.005 / c).epsilon(1e-12));
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    P.vz[p] = -3.0;
+    CHECK(cfl_time_step_limit(s) == Approx(0.005 / (c + 3.0)).epsilon(1e-12));
+    P.vz[p] = 0.0;
+    P.stress[p][3] = -2e7;  // |σ_rz| in the Gershgorin bound
+    CHECK(cfl_time_step_limit(s) == Approx(0.005 / std::sqrt((M + 2e7) / density)).epsilon(1e-12));
+    P.stress[p][3] = 0.0;
+    P.vr[p] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_AS(cfl_time_step_limit(s), StepFailure);
+    P.vr[p] = 0.0;
+  }
 }
 
 TEST_CASE("transfers: each particle moves with the nodal field its strain comes from", "[mpm][transfer]") {
