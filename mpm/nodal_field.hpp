@@ -15,8 +15,10 @@ struct NodalField {
   std::vector<double> momentum_r, momentum_z;              ///< p_i = Σ_p S_ip m_p v_p
   std::vector<double> internal_force_r, internal_force_z;  ///< from particle stresses
   std::vector<double> external_force_r, external_force_z;  ///< gravity, surface loads, damping
-  std::vector<double> velocity_r, velocity_z;              ///< v_i^n = p_i/m_i (MUSL: remapped v_i^{n+1})
-  std::vector<double> velocity_new_r, velocity_new_z;      ///< v_i^{n+1} = v_i^n + Δt f_i/m_i
+  /// v_i^n = p_i/m_i (MUSL: remapped v_i^{n+1}; while a MUSL step's update_particles
+  /// runs, v_i^{n+1} − v_i^n)
+  std::vector<double> velocity_r, velocity_z;
+  std::vector<double> velocity_new_r, velocity_new_z;  ///< v_i^{n+1} = v_i^n + Δt f_i/m_i
 
   void resize(std::size_t nodes);
   std::size_t size() const { return mass.size(); }

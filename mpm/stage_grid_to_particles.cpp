@@ -73,8 +73,13 @@ void update_particles_impl(Simulation& s) {
         const Vec new_r = load_support_row<S>(&f.velocity_new_r[i]), new_z = load_support_row<S>(&f.velocity_new_z[i]);
         vr += N[b] * new_r;
         vz += N[b] * new_z;
-        dvr += N[b] * (new_r - load_support_row<S>(&f.velocity_r[i]));
-        dvz += N[b] * (new_z - load_support_row<S>(&f.velocity_z[i]));
+        if constexpr (Remap) {  // velocity_r, _z hold v_i^{n+1} − v_i^n (see below)
+          dvr += N[b] * load_support_row<S>(&f.velocity_r[i]);
+          dvz += N[b] * load_support_row<S>(&f.velocity_z[i]);
+        } else {
+          dvr += N[b] * (new_r - load_support_row<S>(&f.velocity_r[i]));
+          dvz += N[b] * (new_z - load_support_row<S>(&f.velocity_z[i]));
+        }
       }
       blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
     }
@@ -97,8 +102,13 @@ void update_particles_impl(Simulation& s) {
       for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
         vr += N * f.velocity_new_r[i];
         vz += N * f.velocity_new_z[i];
-        dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
-        dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+        if constexpr (Remap) {
+          dvr += N * f.velocity_r[i];
+          dvz += N * f.velocity_z[i];
+        } else {
+          dvr += N * (f.velocity_new_r[i] - f.velocity_r[i]);
+          dvz += N * (f.velocity_new_z[i] - f.velocity_z[i]);
+        }
       });
       blend_and_move(p, vr, vz, dvr, dvz);
     }
@@ -111,7 +121,16 @@ void update_particles_impl(Simulation& s) {
     }
   };
   if constexpr (Remap) {
+    // v_i^{n+1} − v_i^n once per node, in place of v_i^n, which map_velocities_to_grid
+    // overwrites next with the remapped field: each particle's Δv then reads one nodal
+    // array instead of two (the same differences, so the same bits).
     for (NodalField& f : s.grid.fields) {
+      const std::size_t nodes = f.size();
+      FFP_OMP(omp parallel for schedule(static) if (nodes >= kParallelMinimum))
+      for (std::size_t i = 0; i < nodes; ++i) {
+        f.velocity_r[i] = f.velocity_new_r[i] - f.velocity_r[i];
+        f.velocity_z[i] = f.velocity_new_z[i] - f.velocity_z[i];
+      }
       std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
       std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
     }
