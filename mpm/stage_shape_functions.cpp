@@ -29,13 +29,16 @@ long shape_functions_of(Simulation& s, std::size_t first, std::size_t last, bool
   const GridAxis& axis_z = s.grid.z;
   const auto cells_r = static_cast<std::uint32_t>(axis_r.cells());
   constexpr std::size_t kBlock = 64;
-  int cell_r[kBlock];
+  int cell_r[kBlock], hint_z[kBlock];
   long outside = 0;
   for (std::size_t begin = first; begin < last; begin += kBlock) {
     const std::size_t end = std::min(begin + kBlock, last);
     for (std::size_t i = begin; i < end; ++i) {
       const double r = P.r[i];
-      const int cr = axis_r.cell_near(r, hinted ? static_cast<int>(s.cell[i] % cells_r) : -1);
+      // The previous step's cell (i, j) from its index: one division for both directions.
+      const std::uint32_t previous_z = hinted ? s.cell[i] / cells_r : 0;
+      hint_z[i - begin] = hinted ? static_cast<int>(previous_z) : -1;
+      const int cr = axis_r.cell_near(r, hinted ? static_cast<int>(s.cell[i] - previous_z * cells_r) : -1);
       cell_r[i - begin] = cr;
       if (cr < 0) continue;
       const Weights1D wr = axis_weights<Gimp>(axis_r, r, P.half_r[i], cr);
@@ -52,7 +55,7 @@ long shape_functions_of(Simulation& s, std::size_t first, std::size_t last, bool
     for (std::size_t i = begin; i < end; ++i) {
       const double z = P.z[i];
       const int cr = cell_r[i - begin];
-      const int cz = axis_z.cell_near(z, hinted ? static_cast<int>(s.cell[i] / cells_r) : -1);
+      const int cz = axis_z.cell_near(z, hint_z[i - begin]);
       if (cr < 0 || cz < 0) {
         ++outside;
         continue;
