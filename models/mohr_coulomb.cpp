@@ -13,6 +13,7 @@ MohrCoulomb::MohrCoulomb(const MohrCoulombParameters& parameters)
       strength_(MohrCoulombStrength::of(parameters.friction_angle_rad, parameters.dilatancy_angle_rad,
                                         parameters.cohesion_Pa)),
       stiffness_(PrincipalStiffness::of(parameters.elastic)),
+      directions_(ReturnDirections::of(strength_, stiffness_)),
       elastic_stiffness_(ElasticStiffness::of(parameters.elastic)) {}
 
 double MohrCoulomb::yield_function(const Voigt& stress) const {
@@ -23,7 +24,7 @@ ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) c
   const Voigt trial = stress + elastic_stiffness_.stress_increment(strain_increment);
   const PrincipalStresses principal(trial);
   Eigen::Vector3d returned = principal.values();
-  const ReturnRegion region = return_to_mohr_coulomb(returned, strength_, stiffness_);
+  const ReturnRegion region = return_to_mohr_coulomb(returned, strength_, directions_);
   stress = region == ReturnRegion::elastic ? trial : principal.with_values(returned);
   return region;
 }
@@ -51,12 +52,12 @@ void MohrCoulomb::return_from_trial(Voigt& stress) const {
   if (!trial.planar) {
     const PrincipalStresses principal(stress);
     Eigen::Vector3d returned = principal.values();
-    if (return_to_mohr_coulomb(returned, strength_, stiffness_) != ReturnRegion::elastic)
+    if (return_to_mohr_coulomb(returned, strength_, directions_) != ReturnRegion::elastic)
       stress = principal.with_values(returned);
     return;
   }
   Eigen::Vector3d returned = trial.values();
-  if (return_to_mohr_coulomb(returned, strength_, stiffness_) != ReturnRegion::elastic)
+  if (return_to_mohr_coulomb(returned, strength_, directions_) != ReturnRegion::elastic)
     trial.store_with_values(returned, stress);
 }
 

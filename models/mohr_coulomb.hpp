@@ -60,6 +60,7 @@ class MohrCoulomb {
   MohrCoulombParameters parameters_;
   MohrCoulombStrength strength_;
   PrincipalStiffness stiffness_;
+  ReturnDirections directions_;         ///< of strength_ and stiffness_, formed once
   ElasticStiffness elastic_stiffness_;  ///< λ, 2G for the trial stress
 };
 

@@ -51,28 +51,44 @@ struct MohrCoulombStrength {
   double yield(const Eigen::Vector3d& s) const { return yield(s[0], s[2]); }
 };
 
-/// Returns `stress` (principal, descending, trial on entry) onto the surface.
+/// What a return needs of a strength and a stiffness besides the trial: the flow
+/// directions D g of the planes that meet the σ1 ≥ σ2 ≥ σ3 sector and their
+/// stiffnesses against plastic flow. Once per law where the strength is fixed
+/// (Mohr–Coulomb), per point where it changes (strain softening); the same values
+/// either way.
+struct ReturnDirections {
+  // D g_a of the plane (1,3): along its major, idle and minor axes; g_b on (2,3)
+  // (compression edge) and g_c on (1,2) (extension edge) take the same terms in
+  // other places.
+  double major_term = 0.0, middle_term = 0.0, minor_term = 0.0;
+  double plane_stiffness = 0.0;  ///< n_a · D g_a (> 0 for G, K > 0)
+
+  static ReturnDirections of(const MohrCoulombStrength& strength, const PrincipalStiffness& d) {
+    const double sf = strength.sin_phi, sp = strength.sin_psi, a = d.diagonal, b = d.off_diagonal;
+    ReturnDirections r;
+    r.major_term = a * (1.0 + sp) - b * (1.0 - sp);
+    r.middle_term = 2.0 * b * sp;
+    r.minor_term = b * (1.0 + sp) - a * (1.0 - sp);
+    r.plane_stiffness = (1.0 + sf) * r.major_term - (1.0 - sf) * r.minor_term;
+    return r;
+  }
+};
+
+/// Returns `stress` (principal, descending, trial on entry) onto the surface;
+/// `directions` are ReturnDirections::of(strength, the stiffness).
 inline ReturnRegion return_to_mohr_coulomb(Eigen::Vector3d& stress, const MohrCoulombStrength& strength,
-                                           const PrincipalStiffness& d) {
+                                           const ReturnDirections& directions) {
   const double f_trial = strength.yield(stress);
   if (!(f_trial > 0.0)) return ReturnRegion::elastic;
 
   const double sf = strength.sin_phi;
-  const double sp = strength.sin_psi;
-  const double a = d.diagonal;
-  const double b = d.off_diagonal;
   // Rounding in the comparisons below is judged against the trial's size.
   const double scale = std::max({std::abs(stress[0]), std::abs(stress[2]), strength.cohesion_Pa});
   const double tolerance = 1e-13 * scale;
 
-  // D g for the three planes that meet the σ1 ≥ σ2 ≥ σ3 sector: g_a on (1,3),
-  // g_b on (2,3) (compression edge), g_c on (1,2) (extension edge).
-  const double major_term = a * (1.0 + sp) - b * (1.0 - sp);  // along the plane's major axis
-  const double middle_term = 2.0 * b * sp;                    // along the plane's idle axis
-  const double minor_term = b * (1.0 + sp) - a * (1.0 - sp);  // along the plane's minor axis
+  const double major_term = directions.major_term, middle_term = directions.middle_term,
+               minor_term = directions.minor_term, plane_stiffness = directions.plane_stiffness;
   const Eigen::Vector3d dg_a(major_term, middle_term, minor_term);
-  // n_a · D g_a: the plane's stiffness against plastic flow (> 0 for G, K > 0).
-  const double plane_stiffness = (1.0 + sf) * major_term - (1.0 - sf) * minor_term;
 
   const double multiplier = f_trial / plane_stiffness;
   const Eigen::Vector3d on_plane = stress - multiplier * dg_a;
@@ -132,6 +148,13 @@ inline ReturnRegion return_to_mohr_coulomb(Eigen::Vector3d& stress, const MohrCo
   const bool first = std::abs(strength.yield(first_edge)) <= std::abs(strength.yield(second_edge));
   stress = first ? first_edge : second_edge;
   return first == compression_first ? ReturnRegion::edge_compression : ReturnRegion::edge_extension;
+}
+
+/// The same, the directions formed here (a strength that changes from point to point).
+inline ReturnRegion return_to_mohr_coulomb(Eigen::Vector3d& stress, const MohrCoulombStrength& strength,
+                                           const PrincipalStiffness& d) {
+  if (!(strength.yield(stress) > 0.0)) return ReturnRegion::elastic;  // no directions needed
+  return return_to_mohr_coulomb(stress, strength, ReturnDirections::of(strength, d));
 }
 
 }  // namespace ffp
