@@ -145,25 +145,38 @@ void ssmc_with_rate_law(benchmark::State& bench) {
 }
 
 /// The paper's section 5.5 sand as the FFP runs it (φ'_p = 60°, φ'_c = 32°, ψ_p = 5°,
-/// η = 8; no rate law, no Bolton). `mixed` = 0: every point shears plastically;
-/// 1: two points in three unload elastically, about the FFP run's share of elastic updates;
-/// 2: every point shears by increments a hundred times smaller, as in an MPM step.
-void ssmc_paper_sand(benchmark::State& bench) {
-  std::mt19937_64 rng(5);
-  auto start = stresses(false, rng);
-  auto increments = shearing_increments(false, rng);
-  if (bench.range(0) == 1)
-    for (std::size_t i = 0; i < kBatch; ++i)
-      if (i % 3 != 0) increments[i] *= -0.01;  // reversed and small: elastic unloading
+/// η = 8; no rate law, no Bolton).
+StrainSofteningParameters paper_ssmc_sand() {
   StrainSofteningParameters p;
   p.elastic = paper_mc().elastic;
   p.friction_peak_rad = 60 * kDegree;
   p.friction_residual_rad = 32 * kDegree;
   p.dilatancy_peak_rad = 5 * kDegree;
   p.softening_factor = 8;
-  const StrainSofteningMohrCoulomb law(p);
-  // A softened start (κ = 0.05) as in the soil around the penetrometer.
-  std::vector<StrainSofteningMohrCoulomb::State> fresh(kBatch, {0.05, 0.0});
+  return p;
+}
+
+/// Two points in three of shearing_increments reversed and small: elastic unloading.
+void unload_two_in_three(std::vector<Voigt>& increments) {
+  for (std::size_t i = 0; i < increments.size(); ++i)
+    if (i % 3 != 0) increments[i] *= -0.01;
+}
+
+/// A softened start (κ = 0.05) as in the soil around the penetrometer.
+std::vector<StrainSofteningMohrCoulomb::State> softened_states() {
+  return std::vector<StrainSofteningMohrCoulomb::State>(kBatch, {0.05, 0.0});
+}
+
+/// paper_ssmc_sand from softened_states. `mixed` = 0: every point shears plastically;
+/// 1: two points in three unload elastically, about the FFP run's share of elastic updates;
+/// 2: every point shears by increments a hundred times smaller, as in an MPM step.
+void ssmc_paper_sand(benchmark::State& bench) {
+  std::mt19937_64 rng(5);
+  auto start = stresses(false, rng);
+  auto increments = shearing_increments(false, rng);
+  if (bench.range(0) == 1) unload_two_in_three(increments);
+  const StrainSofteningMohrCoulomb law(paper_ssmc_sand());
+  std::vector<StrainSofteningMohrCoulomb::State> fresh = softened_states();
   if (bench.range(0) == 2) {
     law.update(start, increments, fresh, 1e-5);  // on the surface, then further along
     for (auto& e : increments) e *= 0.01;
@@ -177,16 +190,9 @@ void ssmc_point_by_point(benchmark::State& bench) {
   std::mt19937_64 rng(5);
   auto start = stresses(false, rng);
   auto increments = shearing_increments(false, rng);
-  for (std::size_t i = 0; i < kBatch; ++i)
-    if (i % 3 != 0) increments[i] *= -0.01;
-  StrainSofteningParameters p;
-  p.elastic = paper_mc().elastic;
-  p.friction_peak_rad = 60 * kDegree;
-  p.friction_residual_rad = 32 * kDegree;
-  p.dilatancy_peak_rad = 5 * kDegree;
-  p.softening_factor = 8;
-  const StrainSofteningMohrCoulomb law(p);
-  std::vector<StrainSofteningMohrCoulomb::State> fresh(kBatch, {0.05, 0.0});
+  unload_two_in_three(increments);
+  const StrainSofteningMohrCoulomb law(paper_ssmc_sand());
+  const std::vector<StrainSofteningMohrCoulomb::State> fresh = softened_states();
   std::vector<StrainSofteningMohrCoulomb::State> state = fresh;
   std::vector<Voigt> stress = start;
   for (auto _ : bench) {
