@@ -58,14 +58,8 @@ void update_particles_impl(Simulation& s) {
   };
   // A particle whose support rows go as vectors (mpm/support_row.hpp): a row of nodes per vector.
   using Vec = SupportRow<S>;
-  auto update_by_rows = [&](std::size_t p, NodalField& f, const ShapeWeights& w) {
-    const Vec wr = load_support_row<S>(w.wr);
-    Vec N[S];
-    std::size_t node[S];
-    for (int b = 0; b < S; ++b) {
-      node[b] = s.grid.node(w.node_r, w.node_z + b);
-      N[b] = wr * w.wz[b];
-    }
+  // The gather and the move of a particle whose rows fit, from its rows' weights N.
+  auto gather_by_rows = [&](std::size_t p, const NodalField& f, const Vec N[S], const std::size_t node[S]) {
     if (p < n) {  // not a subcycled body's particle
       Vec vr{}, vz{}, dvr{}, dvz{};
       for (int b = 0; b < S; ++b) {
@@ -83,6 +77,16 @@ void update_particles_impl(Simulation& s) {
       }
       blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
     }
+  };
+  auto update_by_rows = [&](std::size_t p, NodalField& f, const ShapeWeights& w) {
+    const Vec wr = load_support_row<S>(w.wr);
+    Vec N[S];
+    std::size_t node[S];
+    for (int b = 0; b < S; ++b) {
+      node[b] = s.grid.node(w.node_r, w.node_z + b);
+      N[b] = wr * w.wz[b];
+    }
+    gather_by_rows(p, f, N, node);
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
       for (int b = 0; b < S; ++b) {
@@ -134,7 +138,54 @@ void update_particles_impl(Simulation& s) {
       std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
       std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
     }
-    s.bins.scatter(update);
+    if constexpr (S == 2) {
+      s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
+        // Linear hats: the remap's momentum sums of a run of particles in one cell in
+        // registers, as in scatter_linear_strip (stage_particles_to_grid.cpp): loaded
+        // at the run's first particle, stored after its last, the same terms in the
+        // same order (the same bits).
+        constexpr int kNone = -1;
+        int run_field = kNone;
+        std::size_t run_node = 0;
+        double *momentum_r = nullptr, *momentum_z = nullptr;
+        Vec sum_r[2] = {}, sum_z[2] = {};
+        const auto nodes_r = static_cast<std::size_t>(s.grid.r.nodes());
+        auto store_run = [&] {
+          for (int b = 0; b < 2; ++b) {
+            store_support_row<2>(momentum_r + run_node + nodes_r * b, sum_r[b]);
+            store_support_row<2>(momentum_z + run_node + nodes_r * b, sum_z[b]);
+          }
+        };
+        for (const std::uint32_t p : particles) {
+          const int field = s.bodies[P.body[p]].field;
+          NodalField& f = s.grid.fields[static_cast<std::size_t>(field)];
+          const ShapeWeights& w = s.weights[p];
+          const Vec wr = load_support_row<2>(w.wr);
+          const Vec N[2] = {wr * w.wz[0], wr * w.wz[1]};
+          const std::size_t node[2] = {s.grid.node(w.node_r, w.node_z), s.grid.node(w.node_r, w.node_z + 1)};
+          if (field != run_field || node[0] != run_node) {
+            if (run_field != kNone) store_run();
+            run_field = field;
+            run_node = node[0];
+            momentum_r = f.momentum_r.data();
+            momentum_z = f.momentum_z.data();
+            for (int b = 0; b < 2; ++b) {
+              sum_r[b] = load_support_row<2>(momentum_r + node[b]);
+              sum_z[b] = load_support_row<2>(momentum_z + node[b]);
+            }
+          }
+          gather_by_rows(p, f, N, node);
+          const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+          for (int b = 0; b < 2; ++b) {
+            sum_r[b] = sum_r[b] + N[b] * pr;
+            sum_z[b] = sum_z[b] + N[b] * pz;
+          }
+        }
+        if (run_field != kNone) store_run();
+      });
+    } else {
+      s.bins.scatter(update);
+    }
     s.momentum_remapped = true;
   } else {  // each thread its own part's particles (mpm/particle_bins.hpp)
     s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
