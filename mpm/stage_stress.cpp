@@ -18,6 +18,48 @@ void for_strain_mean_particles(const Simulation& s, std::span<const std::uint32_
   }
 }
 
+// Two sums per slot, x_k += a and y_k += b·c, over a strip's particles in order. A
+// run of particles in one slot (they are seeded cell by cell) sums in registers:
+// loaded at the run's first particle and stored after its last, the same terms in
+// the same order as a read-modify-write per particle (the same bits), without the
+// store-to-load chain through memory from one particle to the next.
+class SlotSums {
+ public:
+  SlotSums(std::vector<double>& x, std::vector<double>& y) : x_(x.data()), y_(y.data()) {}
+  /// x_k += a, y_k += b.
+  void add(std::size_t k, double a, double b) {
+    select(k);
+    x_sum_ += a;
+    y_sum_ += b;
+  }
+  /// x_k += a, y_k += b·c, formed as the expression y_k += b * c (a product passed
+  /// in, rounded, would not fuse with the sum as there).
+  void add_product(std::size_t k, double a, double b, double c) {
+    select(k);
+    x_sum_ += a;
+    y_sum_ += b * c;
+  }
+  void store() {
+    if (slot_ == kNone) return;
+    x_[slot_] = x_sum_;
+    y_[slot_] = y_sum_;
+  }
+
+ private:
+  void select(std::size_t k) {
+    if (k == slot_) return;
+    store();
+    slot_ = k;
+    x_sum_ = x_[k];
+    y_sum_ = y_[k];
+  }
+  static constexpr std::size_t kNone = ~std::size_t{0};
+  double* x_;
+  double* y_;
+  std::size_t slot_ = kNone;
+  double x_sum_ = 0.0, y_sum_ = 0.0;
+};
+
 // Strain smoothing (Al-Kafaji 2013; Yerro 2015): per cell c and body,
 //   Δε̄_v,c = Σ_{p∈c} V_p Δε_v,p / Σ_{p∈c} V_p   (V_p = r_p A_p: axisymmetric volume weights)
 //   Δε_p ← Δε_p + (Δε̄_v,c − Δε_v,p)/3 · I
@@ -41,10 +83,11 @@ void smooth_volumetric_strain(Simulation& s) {
     // Each particle's increment is its own (no sums across particles): the same
     // bits made here in strip order as in compute_strain_increments' index order.
     if (make_strain) strain_increments_of_strip(s, strip);
+    SlotSums sums(s.cell_volume, s.cell_volumetric_strain);
     for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
-      s.cell_volume[k] += P.volume[p];
-      s.cell_volumetric_strain[k] += P.volume[p] * trace(s.strain_increment[p]);
+      sums.add_product(k, P.volume[p], P.volume[p], trace(s.strain_increment[p]));
     });
+    sums.store();
     for_strain_mean_particles(s, strip, limit, [&](std::size_t p, std::size_t k) {
       Voigt& de = s.strain_increment[p];
       const double shift = (s.cell_volumetric_strain[k] / s.cell_volume[k] - trace(de)) / 3.0;
@@ -124,12 +167,12 @@ void strip_cell_mean_stress(Simulation& s, int strip, std::span<const std::uint3
     });
     return;
   }
+  SlotSums sums(s.cell_volume, s.cell_mean_stress);
   for (const std::uint32_t p : particles) {
     if (!takes_part_in_cell_means(P, p, limit)) continue;
-    const std::size_t k = s.cell[p] * bodies + P.body[p];
-    s.cell_volume[k] += P.volume[p];
-    s.cell_mean_stress[k] += P.volume[p] * trace(P.stress[p]) / 3.0;
+    sums.add(s.cell[p] * bodies + P.body[p], P.volume[p], P.volume[p] * trace(P.stress[p]) / 3.0);
   }
+  sums.store();
   s.bins.for_each_cell_of_strip(strip, [&](std::size_t cell) {
     for (std::size_t k = cell * bodies; k < (cell + 1) * bodies; ++k)
       if (s.cell_volume[k] > 0.0) s.cell_mean_stress[k] /= s.cell_volume[k];
