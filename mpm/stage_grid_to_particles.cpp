@@ -143,12 +143,13 @@ void update_particles_impl(Simulation& s) {
         // Linear hats: the remap's momentum sums of a run of particles in one cell in
         // registers, as in scatter_linear_strip (stage_particles_to_grid.cpp): loaded
         // at the run's first particle, stored after its last, the same terms in the
-        // same order (the same bits).
+        // same order (the same bits). The run's nodal velocities are read once too.
         constexpr int kNone = -1;
         int run_field = kNone;
         std::size_t run_node = 0;
         double *momentum_r = nullptr, *momentum_z = nullptr;
         Vec sum_r[2] = {}, sum_z[2] = {};
+        Vec new_r[2] = {}, new_z[2] = {}, change_r[2] = {}, change_z[2] = {};  // the run's gathered rows
         const auto nodes_r = static_cast<std::size_t>(s.grid.r.nodes());
         auto store_run = [&] {
           for (int b = 0; b < 2; ++b) {
@@ -172,9 +173,22 @@ void update_particles_impl(Simulation& s) {
             for (int b = 0; b < 2; ++b) {
               sum_r[b] = load_support_row<2>(momentum_r + node[b]);
               sum_z[b] = load_support_row<2>(momentum_z + node[b]);
+              new_r[b] = load_support_row<2>(&f.velocity_new_r[node[b]]);
+              new_z[b] = load_support_row<2>(&f.velocity_new_z[node[b]]);
+              change_r[b] = load_support_row<2>(&f.velocity_r[node[b]]);  // v_i^{n+1} − v_i^n (below)
+              change_z[b] = load_support_row<2>(&f.velocity_z[node[b]]);
             }
           }
-          gather_by_rows(p, f, N, node);
+          if (p < n) {  // gather_by_rows, from the run's rows
+            Vec vr{}, vz{}, dvr{}, dvz{};
+            for (int b = 0; b < 2; ++b) {
+              vr += N[b] * new_r[b];
+              vz += N[b] * new_z[b];
+              dvr += N[b] * change_r[b];
+              dvz += N[b] * change_z[b];
+            }
+            blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
+          }
           const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
           for (int b = 0; b < 2; ++b) {
             sum_r[b] = sum_r[b] + N[b] * pr;
