@@ -190,6 +190,82 @@ void scatter_linear_strip(Simulation& s, std::span<const std::uint32_t> particle
   if (run_field != kNone) store_run();
 }
 
+/// What add_mass_momentum_force's row terms are formed from, for one GIMP particle.
+struct GimpParticleTerms {
+  const ShapeWeights* w;
+  double m, pr, pz, V, s_rr, s_zz, s_rz, hoop;
+};
+inline GimpParticleTerms gimp_particle_terms(const Simulation& s, std::size_t p, StrainSmoothing smoothing,
+                                             const std::vector<double>& limit) {
+  const Particles& P = s.particles;
+  const ShapeWeights& w = s.weights[p];
+  const double m = P.mass[p];
+  const ForceStress sig = particle_force_stress(s, p, smoothing, limit);
+  return {&w, m, m * P.vr[p], m * P.vz[p], P.volume[p], sig.rr, sig.zz, sig.rz, sig.tt * w.inverse_r};
+}
+
+/// Two consecutive GIMP particles of a strip on the same support columns, the second
+/// one node row up (a cell's lower and upper particle, as seeded): their four node
+/// rows take one read-modify-write per nodal array instead of three and three, the
+/// lower particle's term added before the upper's, as one by one (the same bits).
+/// Array by array, so that only the two particles' factors of that array are live.
+inline void add_gimp_pair(Grid& grid, NodalField& f, const GimpParticleTerms& lower, const GimpParticleTerms& upper) {
+  const std::size_t first = grid.node(lower.w->node_r, lower.w->node_z);
+  const auto row_stride = static_cast<std::size_t>(grid.r.nodes());
+  // x_row += t_lower(row) + t_upper(row − 1), the terms from row factors (u, v):
+  // row b's term is u s_z,b (+ v s_z,b' for the forces).
+  auto add_rows = [&](double* x, Row u_lower, Row v_lower, Row u_upper, Row v_upper, bool with_gradient) {
+    for (int row = 0; row < 4; ++row) {
+      double* at = x + first + row_stride * static_cast<std::size_t>(row);
+      Row sum = load_support_row<3>(at);
+      if (row < 3) {
+        const double wz = lower.w->wz[row], gz = lower.w->gz[row];
+        sum = with_gradient ? sum + (u_lower * wz + v_lower * gz) : sum + u_lower * wz;
+      }
+      if (row > 0) {
+        const double wz = upper.w->wz[row - 1], gz = upper.w->gz[row - 1];
+        sum = with_gradient ? sum + (u_upper * wz + v_upper * gz) : sum + u_upper * wz;
+      }
+      store_support_row<3>(at, sum);
+    }
+  };
+  const Row wr_l = load_support_row<3>(lower.w->wr), gr_l = load_support_row<3>(lower.w->gr);
+  const Row wr_u = load_support_row<3>(upper.w->wr), gr_u = load_support_row<3>(upper.w->gr);
+  const Row none{};
+  add_rows(f.mass.data(), lower.m * wr_l, none, upper.m * wr_u, none, false);
+  add_rows(f.momentum_r.data(), lower.pr * wr_l, none, upper.pr * wr_u, none, false);
+  add_rows(f.momentum_z.data(), lower.pz * wr_l, none, upper.pz * wr_u, none, false);
+  add_rows(f.internal_force_r.data(), -lower.V * (lower.s_rr * gr_l + lower.hoop * wr_l), -lower.V * lower.s_rz * wr_l,
+           -upper.V * (upper.s_rr * gr_u + upper.hoop * wr_u), -upper.V * upper.s_rz * wr_u, true);
+  add_rows(f.internal_force_z.data(), -lower.V * lower.s_rz * gr_l, -lower.V * lower.s_zz * wr_l,
+           -upper.V * upper.s_rz * gr_u, -upper.V * upper.s_zz * wr_u, true);
+}
+
+/// The fused scatter of one strip's particles for GIMP: a cell's lower and upper
+/// particle as a pair (add_gimp_pair), any other one by one.
+void scatter_gimp_strip(Simulation& s, std::span<const std::uint32_t> particles, StrainSmoothing smoothing,
+                        const std::vector<double>& limit) {
+  const Particles& P = s.particles;
+  auto field_of = [&](std::size_t p) { return s.bodies[P.body[p]].field; };
+  for (std::size_t k = 0; k < particles.size();) {
+    const std::size_t p = particles[k];
+    const ShapeWeights& w = s.weights[p];
+    NodalField& f = s.grid.fields[field_of(p)];
+    if (k + 1 < particles.size() && rows_fit<3>(s.grid, w)) {
+      const std::size_t q = particles[k + 1];
+      const ShapeWeights& v = s.weights[q];
+      if (v.node_r == w.node_r && v.node_z == w.node_z + 1 && field_of(q) == field_of(p)) {
+        add_gimp_pair(s.grid, f, gimp_particle_terms(s, p, smoothing, limit),
+                      gimp_particle_terms(s, q, smoothing, limit));
+        k += 2;
+        continue;
+      }
+    }
+    add_mass_momentum_force<3>(s, p, f, smoothing, limit);
+    ++k;
+  }
+}
+
 /// map_particles_to_grid, smooth_mean_stress and compute_internal_forces in one
 /// pass over the particles, strip by strip: the strip's cell means (its cells are
 /// its own), then per particle its mass, momentum and internal-force terms. Every
@@ -197,7 +273,6 @@ void scatter_linear_strip(Simulation& s, std::span<const std::uint32_t> particle
 /// apart (ParticleBins order); the nodal terms are formed row by row (above).
 template <int S>
 void scatter_mass_momentum_forces(Simulation& s) {
-  const Particles& P = s.particles;
   const StrainSmoothing smoothing = s.settings.strain_smoothing;
   const bool smoothed = smoothing != StrainSmoothing::off;
   const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
@@ -207,10 +282,7 @@ void scatter_mass_momentum_forces(Simulation& s) {
     if constexpr (S == 2) {
       scatter_linear_strip(s, particles, smoothing, limit);
     } else {
-      for (const std::uint32_t p : particles) {
-        NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
-        add_mass_momentum_force<S>(s, p, f, smoothing, limit);
-      }
+      scatter_gimp_strip(s, particles, smoothing, limit);
     }
   });
 }
