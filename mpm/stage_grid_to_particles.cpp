@@ -198,7 +198,66 @@ void update_particles_impl(Simulation& s) {
         if (run_field != kNone) store_run();
       });
     } else {
-      s.bins.scatter(update);
+      // GIMP: a cell's lower and upper particle (consecutive, as seeded: the same
+      // support columns, the upper one node row up) as a pair. Their four node rows
+      // are read once per nodal array, and the remap adds to each once, the lower's
+      // term before the upper's, as one by one (the same bits). Array by array, so
+      // that only that array's sums are live.
+      auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w,
+                             const ShapeWeights& v) {
+        const Vec wr_p = load_support_row<S>(w.wr), wr_q = load_support_row<S>(v.wr);
+        Vec N_p[S], N_q[S];
+        for (int b = 0; b < S; ++b) {
+          N_p[b] = wr_p * w.wz[b];
+          N_q[b] = wr_q * v.wz[b];
+        }
+        const std::size_t first = s.grid.node(w.node_r, w.node_z);
+        const auto row_stride = static_cast<std::size_t>(s.grid.r.nodes());
+        auto row_at = [&](int row) { return first + row_stride * static_cast<std::size_t>(row); };
+        auto gather = [&](const double* x, Vec& sum_p, Vec& sum_q) {
+          for (int row = 0; row < S + 1; ++row) {
+            const Vec at = load_support_row<S>(x + row_at(row));
+            if (row < S) sum_p += N_p[row] * at;
+            if (row > 0) sum_q += N_q[row - 1] * at;
+          }
+        };
+        Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
+        gather(f.velocity_new_r.data(), vr_p, vr_q);
+        gather(f.velocity_new_z.data(), vz_p, vz_q);
+        gather(f.velocity_r.data(), dvr_p, dvr_q);  // v_i^{n+1} − v_i^n (below)
+        gather(f.velocity_z.data(), dvz_p, dvz_q);
+        blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
+        blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
+        auto remap = [&](double* x, double momentum_p, double momentum_q) {
+          for (int row = 0; row < S + 1; ++row) {
+            double* at = x + row_at(row);
+            Vec sum = load_support_row<S>(at);
+            if (row < S) sum = sum + N_p[row] * momentum_p;
+            if (row > 0) sum = sum + N_q[row - 1] * momentum_q;
+            store_support_row<S>(at, sum);
+          }
+        };
+        remap(f.momentum_r.data(), P.mass[p] * P.vr[p], P.mass[q] * P.vr[q]);
+        remap(f.momentum_z.data(), P.mass[p] * P.vz[p], P.mass[q] * P.vz[q]);
+      };
+      s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
+        for (std::size_t k = 0; k < particles.size();) {
+          const std::size_t p = particles[k];
+          const ShapeWeights& w = s.weights[p];
+          if (k + 1 < particles.size() && p < n && rows_fit<S>(s.grid, w)) {
+            const std::size_t q = particles[k + 1];
+            const ShapeWeights& v = s.weights[q];
+            const std::uint8_t field = s.bodies[P.body[p]].field;
+            if (q < n && v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[q]].field == field) {
+              update_pair(p, q, s.grid.fields[field], w, v);
+              k += 2;
+              continue;
+            }
+          }
+          update(p);
+          ++k;
+        }
+      });
     }
     s.momentum_remapped = true;
   } else {  // each thread its own part's particles (mpm/particle_bins.hpp)
