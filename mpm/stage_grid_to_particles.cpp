@@ -338,6 +338,55 @@ inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const d
   apply_velocity_gradient(L, dt, de, spin_dt, volume);
 }
 
+/// strain_increment_of for a GIMP cell's lower and upper particle (consecutive, the
+/// same support columns, the upper one node row up), their four node rows read once
+/// for both; each particle's sums take the same terms in the same order (the same bits).
+inline void strain_increments_of_pair(const Grid& grid, const ShapeWeights& lower, const ShapeWeights& upper,
+                                      const double* __restrict vr, const double* __restrict vz, double dt,
+                                      Voigt& de_lower, double& spin_lower, double& volume_lower, Voigt& de_upper,
+                                      double& spin_upper, double& volume_upper) {
+  const Row wr_l = load_support_row<3>(lower.wr), gr_l = load_support_row<3>(lower.gr);
+  const Row wr_u = load_support_row<3>(upper.wr), gr_u = load_support_row<3>(upper.gr);
+  Row rr_l{}, rz_l{}, zr_l{}, zz_l{}, tt_l{}, rr_u{}, rz_u{}, zr_u{}, zz_u{}, tt_u{};
+  const std::size_t first = grid.node(lower.node_r, lower.node_z);
+  const auto row_stride = static_cast<std::size_t>(grid.r.nodes());
+  for (int row = 0; row < 4; ++row) {
+    const std::size_t i = first + row_stride * static_cast<std::size_t>(row);
+    const Row vr_row = load_support_row<3>(vr + i), vz_row = load_support_row<3>(vz + i);
+    if (row < 3) {
+      const double wz = lower.wz[row], gz = lower.gz[row];
+      const Row N = wr_l * wz, Gr = gr_l * wz, Gz = wr_l * gz;
+      rr_l += vr_row * Gr;
+      rz_l += vr_row * Gz;
+      zr_l += vz_row * Gr;
+      zz_l += vz_row * Gz;
+      tt_l += vr_row * N;
+    }
+    if (row > 0) {
+      const double wz = upper.wz[row - 1], gz = upper.gz[row - 1];
+      const Row N = wr_u * wz, Gr = gr_u * wz, Gz = wr_u * gz;
+      rr_u += vr_row * Gr;
+      rz_u += vr_row * Gz;
+      zr_u += vz_row * Gr;
+      zz_u += vz_row * Gz;
+      tt_u += vr_row * N;
+    }
+  }
+  VelocityGradient L;
+  L.rr = row_sum(rr_l);
+  L.rz = row_sum(rz_l);
+  L.zr = row_sum(zr_l);
+  L.zz = row_sum(zz_l);
+  L.tt = row_sum(tt_l) * lower.inverse_r;
+  apply_velocity_gradient(L, dt, de_lower, spin_lower, volume_lower);
+  L.rr = row_sum(rr_u);
+  L.rz = row_sum(rz_u);
+  L.zr = row_sum(zr_u);
+  L.zz = row_sum(zz_u);
+  L.tt = row_sum(tt_u) * upper.inverse_r;
+  apply_velocity_gradient(L, dt, de_upper, spin_upper, volume_upper);
+}
+
 /// The same for particles first..last of `index` (p = index(k)).
 template <int S, class Index>
 void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, Index&& index, NodalArray velocity_r,
@@ -353,7 +402,20 @@ void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, In
   for (std::size_t k = first; k < last; ++k) {
     const std::size_t p = index(k);
     if (p >= n) continue;
-    const NodalField& f = grid.fields[s.bodies[P.body[p]].field];
+    const std::uint8_t field = s.bodies[P.body[p]].field;
+    const NodalField& f = grid.fields[field];
+    if constexpr (S == 3) {  // a GIMP cell's lower and upper particle as a pair
+      if (k + 1 < last && rows_fit<S>(grid, weights[p])) {
+        const std::size_t q = index(k + 1);
+        const ShapeWeights &w = weights[p], &v = weights[q];
+        if (q < n && v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[q]].field == field) {
+          strain_increments_of_pair(grid, w, v, (f.*velocity_r).data(), (f.*velocity_z).data(), dt, strain_increment[p],
+                                    spin[p], volume[p], strain_increment[q], spin[q], volume[q]);
+          ++k;
+          continue;
+        }
+      }
+    }
     strain_increment_of<S>(grid, weights[p], (f.*velocity_r).data(), (f.*velocity_z).data(), dt, strain_increment[p],
                            spin[p], volume[p]);
   }
