@@ -261,8 +261,55 @@ void update_particles_impl(Simulation& s) {
     }
     s.momentum_remapped = true;
   } else {  // each thread its own part's particles (mpm/particle_bins.hpp)
+    // GIMP: a cell's lower and upper particle (consecutive, as seeded) as a pair whose
+    // four node rows are read once for both, as in the remap above (the same bits).
+    auto gather_pair = [&](std::size_t p, std::size_t q, const NodalField& f, const ShapeWeights& w,
+                           const ShapeWeights& v) {
+      const Vec wr_p = load_support_row<S>(w.wr), wr_q = load_support_row<S>(v.wr);
+      Vec N_p[S], N_q[S];
+      for (int b = 0; b < S; ++b) {
+        N_p[b] = wr_p * w.wz[b];
+        N_q[b] = wr_q * v.wz[b];
+      }
+      const std::size_t first = s.grid.node(w.node_r, w.node_z);
+      const auto row_stride = static_cast<std::size_t>(s.grid.r.nodes());
+      // Σ S v^{n+1} and Σ S (v^{n+1} − v^n) of one component for both particles.
+      auto gather = [&](const double* updated, const double* previous, Vec& v_p, Vec& dv_p, Vec& v_q, Vec& dv_q) {
+        for (int row = 0; row < S + 1; ++row) {
+          const std::size_t i = first + row_stride * static_cast<std::size_t>(row);
+          const Vec now = load_support_row<S>(updated + i), change = now - load_support_row<S>(previous + i);
+          if (row < S) {
+            v_p += N_p[row] * now;
+            dv_p += N_p[row] * change;
+          }
+          if (row > 0) {
+            v_q += N_q[row - 1] * now;
+            dv_q += N_q[row - 1] * change;
+          }
+        }
+      };
+      Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
+      gather(f.velocity_new_r.data(), f.velocity_r.data(), vr_p, dvr_p, vr_q, dvr_q);
+      gather(f.velocity_new_z.data(), f.velocity_z.data(), vz_p, dvz_p, vz_q, dvz_q);
+      blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
+      blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
+    };
     s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
-      for (std::size_t p = first; p < last; ++p) update(p);
+      for (std::size_t p = first; p < last; ++p) {
+        if constexpr (S == 3) {
+          const ShapeWeights& w = s.weights[p];
+          if (p + 1 < last && rows_fit<S>(s.grid, w)) {
+            const ShapeWeights& v = s.weights[p + 1];
+            const std::uint8_t field = s.bodies[P.body[p]].field;
+            if (v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[p + 1]].field == field) {
+              gather_pair(p, p + 1, s.grid.fields[field], w, v);
+              ++p;
+              continue;
+            }
+          }
+        }
+        update(p);
+      }
     });
   }
   s.wall_clamps += clamps;
