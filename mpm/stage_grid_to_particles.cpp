@@ -248,7 +248,7 @@ void update_particles_impl(Simulation& s) {
             const std::size_t q = particles[k + 1];
             const ShapeWeights& v = s.weights[q];
             const std::uint8_t field = s.bodies[P.body[p]].field;
-            if (q < n && v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[q]].field == field) {
+            if (q < n && stacked_pair(w, v) && s.bodies[P.body[q]].field == field) {
               update_pair(p, q, s.grid.fields[field], w, v);
               k += 2;
               continue;
@@ -301,7 +301,7 @@ void update_particles_impl(Simulation& s) {
           if (p + 1 < last && rows_fit<S>(s.grid, w)) {
             const ShapeWeights& v = s.weights[p + 1];
             const std::uint8_t field = s.bodies[P.body[p]].field;
-            if (v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[p + 1]].field == field) {
+            if (stacked_pair(w, v) && s.bodies[P.body[p + 1]].field == field) {
               gather_pair(p, p + 1, s.grid.fields[field], w, v);
               ++p;
               continue;
@@ -455,7 +455,7 @@ void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, In
       if (k + 1 < last && rows_fit<S>(grid, weights[p])) {
         const std::size_t q = index(k + 1);
         const ShapeWeights &w = weights[p], &v = weights[q];
-        if (q < n && v.node_r == w.node_r && v.node_z == w.node_z + 1 && s.bodies[P.body[q]].field == field) {
+        if (q < n && stacked_pair(w, v) && s.bodies[P.body[q]].field == field) {
           strain_increments_of_pair(grid, w, v, (f.*velocity_r).data(), (f.*velocity_z).data(), dt, strain_increment[p],
                                     spin[p], volume[p], strain_increment[q], spin[q], volume[q]);
           ++k;

@@ -254,7 +254,7 @@ void scatter_gimp_strip(Simulation& s, std::span<const std::uint32_t> particles,
     if (k + 1 < particles.size() && rows_fit<3>(s.grid, w)) {
       const std::size_t q = particles[k + 1];
       const ShapeWeights& v = s.weights[q];
-      if (v.node_r == w.node_r && v.node_z == w.node_z + 1 && field_of(q) == field_of(p)) {
+      if (stacked_pair(w, v) && field_of(q) == field_of(p)) {
         add_gimp_pair(s.grid, f, gimp_particle_terms(s, p, smoothing, limit),
                       gimp_particle_terms(s, q, smoothing, limit));
         k += 2;

@@ -57,4 +57,12 @@ inline bool rows_fit(const Grid& grid, const ShapeWeights& w) {
   return S == 2 || (kGimpRowVectors && w.node_r + 3 < grid.r.nodes());
 }
 
+/// Two GIMP particles whose supports are the same node columns, the second one node
+/// row up: a cell's lower and upper particle, seeded one after the other. Together
+/// they touch four node rows instead of six, so the transfers take them as a pair
+/// (each nodal sum still takes the lower's term before the upper's).
+inline bool stacked_pair(const ShapeWeights& lower, const ShapeWeights& upper) {
+  return upper.node_r == lower.node_r && upper.node_z == lower.node_z + 1;
+}
+
 }  // namespace ffp::mpm
