@@ -36,6 +36,23 @@ inline void for_support_nodes(const Grid& grid, const ShapeWeights& w, Fn&& fn) 
   }
 }
 
+/// A GIMP stacked pair (stacked_pair): each particle's row weights N_b = s_r s_z,b,
+/// and where their four node rows start (the lower's row b is node row b, the
+/// upper's row b is node row b + 1).
+struct StackedPairRows {
+  Row lower[3], upper[3];
+  std::size_t first, stride;
+  StackedPairRows(const Grid& grid, const ShapeWeights& w, const ShapeWeights& v)
+      : first(grid.node(w.node_r, w.node_z)), stride(static_cast<std::size_t>(grid.r.nodes())) {
+    const Row wr_lower = load_support_row<3>(w.wr), wr_upper = load_support_row<3>(v.wr);
+    for (int b = 0; b < 3; ++b) {
+      lower[b] = wr_lower * w.wz[b];
+      upper[b] = wr_upper * v.wz[b];
+    }
+  }
+  std::size_t row(int r) const { return first + stride * static_cast<std::size_t>(r); }
+};
+
 /// Remap: also p_i += S_ip m_p v_p^{n+1} while the particle's weights are at hand
 /// (MUSL), in ParticleBins order, so every nodal sum keeps its one fixed order.
 template <int S, bool Move, bool Remap>
@@ -205,20 +222,12 @@ void update_particles_impl(Simulation& s) {
       // that only that array's sums are live.
       auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w,
                              const ShapeWeights& v) {
-        const Vec wr_p = load_support_row<S>(w.wr), wr_q = load_support_row<S>(v.wr);
-        Vec N_p[S], N_q[S];
-        for (int b = 0; b < S; ++b) {
-          N_p[b] = wr_p * w.wz[b];
-          N_q[b] = wr_q * v.wz[b];
-        }
-        const std::size_t first = s.grid.node(w.node_r, w.node_z);
-        const auto row_stride = static_cast<std::size_t>(s.grid.r.nodes());
-        auto row_at = [&](int row) { return first + row_stride * static_cast<std::size_t>(row); };
+        const StackedPairRows N(s.grid, w, v);
         auto gather = [&](const double* x, Vec& sum_p, Vec& sum_q) {
           for (int row = 0; row < S + 1; ++row) {
-            const Vec at = load_support_row<S>(x + row_at(row));
-            if (row < S) sum_p += N_p[row] * at;
-            if (row > 0) sum_q += N_q[row - 1] * at;
+            const Vec at = load_support_row<S>(x + N.row(row));
+            if (row < S) sum_p += N.lower[row] * at;
+            if (row > 0) sum_q += N.upper[row - 1] * at;
           }
         };
         Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
@@ -230,10 +239,10 @@ void update_particles_impl(Simulation& s) {
         blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
         auto remap = [&](double* x, double momentum_p, double momentum_q) {
           for (int row = 0; row < S + 1; ++row) {
-            double* at = x + row_at(row);
+            double* at = x + N.row(row);
             Vec sum = load_support_row<S>(at);
-            if (row < S) sum = sum + N_p[row] * momentum_p;
-            if (row > 0) sum = sum + N_q[row - 1] * momentum_q;
+            if (row < S) sum = sum + N.lower[row] * momentum_p;
+            if (row > 0) sum = sum + N.upper[row - 1] * momentum_q;
             store_support_row<S>(at, sum);
           }
         };
@@ -265,30 +274,23 @@ void update_particles_impl(Simulation& s) {
     // four node rows are read once for both, as in the remap above (the same bits).
     auto gather_pair = [&](std::size_t p, std::size_t q, const NodalField& f, const ShapeWeights& w,
                            const ShapeWeights& v) {
-      const Vec wr_p = load_support_row<S>(w.wr), wr_q = load_support_row<S>(v.wr);
-      Vec N_p[S], N_q[S];
-      for (int b = 0; b < S; ++b) {
-        N_p[b] = wr_p * w.wz[b];
-        N_q[b] = wr_q * v.wz[b];
-      }
-      const std::size_t first = s.grid.node(w.node_r, w.node_z);
-      const auto row_stride = static_cast<std::size_t>(s.grid.r.nodes());
+      const StackedPairRows N(s.grid, w, v);
       // Σ S v^{n+1} and Σ S (v^{n+1} − v^n) of one component for both particles.
-      auto gather = [&](const double* updated, const double* previous, Vec& v_p, Vec& dv_p, Vec& v_q, Vec& dv_q) {
-        for (int row = 0; row < S + 1; ++row) {
-          const std::size_t i = first + row_stride * static_cast<std::size_t>(row);
-          const Vec now = load_support_row<S>(updated + i), change = now - load_support_row<S>(previous + i);
-          if (row < S) {
-            v_p += N_p[row] * now;
-            dv_p += N_p[row] * change;
+      auto gather = [&](const double* updated, const double* previous, Row& v_p, Row& dv_p, Row& v_q, Row& dv_q) {
+        for (int row = 0; row < 4; ++row) {
+          const std::size_t i = N.row(row);
+          const Row now = load_support_row<3>(updated + i), change = now - load_support_row<3>(previous + i);
+          if (row < 3) {
+            v_p += N.lower[row] * now;
+            dv_p += N.lower[row] * change;
           }
           if (row > 0) {
-            v_q += N_q[row - 1] * now;
-            dv_q += N_q[row - 1] * change;
+            v_q += N.upper[row - 1] * now;
+            dv_q += N.upper[row - 1] * change;
           }
         }
       };
-      Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
+      Row vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
       gather(f.velocity_new_r.data(), f.velocity_r.data(), vr_p, dvr_p, vr_q, dvr_q);
       gather(f.velocity_new_z.data(), f.velocity_z.data(), vz_p, dvz_p, vz_q, dvz_q);
       blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));

@@ -221,6 +221,36 @@ TEST_CASE("transfers: each particle moves with the nodal field its strain comes 
   }
 }
 
+namespace {
+
+/// An elastic block filling the grid's width, thrown outwards and down against the
+/// walls (a roller axis and wall, a fixed base): stresses, shear included, and
+/// velocities that vary from particle to particle after a few steps.
+ModelDescription thrown_block(ShapeFunction shape, Transfer transfer) {
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.2, 8);
+  m.z_nodes_m = testing::nodes(0.0, 0.3, 12);
+  m.bodies.push_back(testing::elastic_body("block", 1e6, 0.3, 2000.0, BoxRegion{0.0, 0.2, 0.0, 0.2}, 0.5, -1.0));
+  m.gravity_m_s2 = 9.81;
+  m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::free};
+  m.solver.shape_function = shape;
+  m.solver.transfer = transfer;
+  return m;
+}
+
+/// max |a − b| over max |b|: the largest of a nodal array sets the rounding scale
+/// of sums of terms of both signs.
+double relative_gap(const std::vector<double>& a, const std::vector<double>& b) {
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(b[i]));
+  }
+  return worst / scale;
+}
+
+}  // namespace
+
 TEST_CASE("transfers: a support row per vector gives the node-by-node sums", "[mpm][transfer]") {
   // The kernel maps a support row as one vector (mpm/support_row.hpp), except for a
   // GIMP particle whose row ends at the grid's last node column, which goes node by
@@ -229,14 +259,7 @@ TEST_CASE("transfers: a support row per vector gives the node-by-node sums", "[m
   // S_ip m_p, S_ip m_p v_p, −V_p (σ_p·G_ip + σ_θθ S_ip/r_p e_r) and Δt sym(Σ v_i ⊗ G_ip)
   // formed node by node here, to rounding.
   for (const ShapeFunction shape : {ShapeFunction::gimp, ShapeFunction::linear}) {
-    ModelDescription m;
-    m.r_nodes_m = testing::nodes(0.0, 0.2, 8);
-    m.z_nodes_m = testing::nodes(0.0, 0.3, 12);
-    m.bodies.push_back(testing::elastic_body("block", 1e6, 0.3, 2000.0, BoxRegion{0.0, 0.2, 0.0, 0.2}, 0.5, -1.0));
-    m.gravity_m_s2 = 9.81;
-    m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::free};
-    m.solver.shape_function = shape;
-    m.solver.transfer = Transfer::usl;
+    ModelDescription m = thrown_block(shape, Transfer::usl);
     m.solver.strain_smoothing = StrainSmoothing::off;
     Simulation s(m);
     // Thrown outwards and down against the walls: stresses, shear included, and
@@ -299,21 +322,12 @@ TEST_CASE("transfers: a support row per vector gives the node-by-node sums", "[m
       strain_gap = std::max(strain_gap, (s.strain_increment[p] - expected).cwiseAbs().maxCoeff());
       strain_scale = std::max(strain_scale, expected.cwiseAbs().maxCoeff());
     }
-    // The largest of each array sets the rounding scale: sums of terms of both signs.
-    auto gap = [](const std::vector<double>& a, const std::vector<double>& b) {
-      double worst = 0.0, scale = 0.0;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        worst = std::max(worst, std::abs(a[i] - b[i]));
-        scale = std::max(scale, std::abs(b[i]));
-      }
-      return worst / scale;
-    };
     INFO(to_string(shape) << ": " << edge_particles << " particles at the last column");
     if (shape == ShapeFunction::gimp) CHECK(edge_particles > 0);  // both paths are taken
-    CHECK(gap(f.mass, mass) < 1e-13);
-    CHECK(gap(f.momentum_z, momentum_z) < 1e-13);
-    CHECK(gap(f.internal_force_r, force_r) < 1e-12);
-    CHECK(gap(f.internal_force_z, force_z) < 1e-12);
+    CHECK(relative_gap(f.mass, mass) < 1e-13);
+    CHECK(relative_gap(f.momentum_z, momentum_z) < 1e-13);
+    CHECK(relative_gap(f.internal_force_r, force_r) < 1e-12);
+    CHECK(relative_gap(f.internal_force_z, force_z) < 1e-12);
     REQUIRE(strain_scale > 0.0);
     CHECK(strain_gap < 1e-11 * strain_scale);
   }
@@ -324,15 +338,7 @@ TEST_CASE("transfers: the MUSL remap sums the updated particles' momentum node b
   // linear hats a run of particles in one cell adds to its nodes in registers. Whatever
   // the path, p_i must be that sum, formed node by node here, to rounding.
   for (const ShapeFunction shape : {ShapeFunction::gimp, ShapeFunction::linear}) {
-    ModelDescription m;
-    m.r_nodes_m = testing::nodes(0.0, 0.2, 8);
-    m.z_nodes_m = testing::nodes(0.0, 0.3, 12);
-    m.bodies.push_back(testing::elastic_body("block", 1e6, 0.3, 2000.0, BoxRegion{0.0, 0.2, 0.0, 0.2}, 0.5, -1.0));
-    m.gravity_m_s2 = 9.81;
-    m.boundaries = {Fixity::roller, Fixity::roller, Fixity::fixed, Fixity::free};
-    m.solver.shape_function = shape;
-    m.solver.transfer = Transfer::musl;
-    Simulation s(m);
+    Simulation s(thrown_block(shape, Transfer::musl));
     for (int k = 0; k < 5; ++k) s.advance();  // thrown against the walls: velocities vary by particle
     const std::vector<Stage>& stages = s.stages.items();
     auto stage = stages.begin();
@@ -352,16 +358,8 @@ TEST_CASE("transfers: the MUSL remap sums the updated particles' momentum node b
           momentum_z[i] += w.wr[a] * w.wz[b] * P.mass[p] * P.vz[p];
         }
     }
-    auto gap = [](const std::vector<double>& a, const std::vector<double>& b) {
-      double worst = 0.0, scale = 0.0;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        worst = std::max(worst, std::abs(a[i] - b[i]));
-        scale = std::max(scale, std::abs(b[i]));
-      }
-      return worst / scale;
-    };
     INFO(to_string(shape));
-    CHECK(gap(f.momentum_r, momentum_r) < 1e-13);
-    CHECK(gap(f.momentum_z, momentum_z) < 1e-13);
+    CHECK(relative_gap(f.momentum_r, momentum_r) < 1e-13);
+    CHECK(relative_gap(f.momentum_z, momentum_z) < 1e-13);
   }
 }
