@@ -8,6 +8,7 @@
 /// are printed once to stderr (FFP_MPM_BENCH_STAGES=1) to show where time goes.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,7 +41,7 @@ Simulation sand_block(ShapeFunction shape, int cells) {
   return Simulation(m);
 }
 
-void print_stage_times(Simulation& s, const char* label) {
+void print_stage_times(Simulation& s, const char* label, int steps) {
   std::vector<double> seconds(s.stages.items().size(), 0.0);
   StageList timed;
   for (std::size_t k = 0; k < s.stages.items().size(); ++k) {
@@ -53,7 +54,6 @@ void print_stage_times(Simulation& s, const char* label) {
   }
   const StageList original = s.stages;
   s.stages = timed;
-  const int steps = 50;
   for (int k = 0; k < steps; ++k) s.advance();
   s.stages = original;
   std::fprintf(stderr, "%s: ns per particle-step by stage\n", label);
@@ -74,10 +74,13 @@ void BM_MpmStep(benchmark::State& state) {
   Simulation s = sand_block(shape, static_cast<int>(state.range(2)));
   for (int k = 0; k < 5; ++k) s.advance();         // warm caches and the page tables
   static std::set<std::pair<long, long>> printed;  // benchmark calls this once per trial size
-  if (std::getenv("FFP_MPM_BENCH_STAGES") && printed.insert({state.range(0) * 10 + threads, state.range(2)}).second)
-    print_stage_times(s, (std::string(shape == ShapeFunction::gimp ? "GIMP" : "linear") + ", " +
-                          std::to_string(threads) + " thread(s)")
-                             .c_str());
+  const char* stage_steps = std::getenv("FFP_MPM_BENCH_STAGES");
+  if (stage_steps && printed.insert({state.range(0) * 10 + threads, state.range(2)}).second)
+    print_stage_times(
+        s,
+        (std::string(shape == ShapeFunction::gimp ? "GIMP" : "linear") + ", " + std::to_string(threads) + " thread(s)")
+            .c_str(),
+        std::max(50, std::atoi(stage_steps)));
   for (auto _ : state) s.advance();
   const double particle_steps = static_cast<double>(state.iterations()) * static_cast<double>(s.particles.size());
   state.counters["particles"] = static_cast<double>(s.particles.size());
