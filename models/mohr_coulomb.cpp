@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "models/elastic_screen.hpp"
+#include "models/mohr_coulomb_lanes.hpp"
 #include "models/principal_stress.hpp"
 
 namespace ffp {
@@ -31,20 +32,34 @@ ReturnRegion MohrCoulomb::update(Voigt& stress, const Voigt& strain_increment) c
 
 // Most points of a batch stay elastic: the elastic screen forms every trial and
 // tests it in vector lanes (screen_elastic_trials, the same bits as update() above),
-// block by block; a point that yields returns from its trial, on ElasticTrial's scalar
-// principal values without the principal-space object where θθ is principal (again
-// the same bits), through PrincipalStresses otherwise.
+// block by block. The points that yield with θθ principal (the MPM) return four at a
+// time in lanes (return_planar_trials, again the same bits), the last few of the batch
+// and any other point one by one (return_from_trial).
 void MohrCoulomb::update(std::span<Voigt> stress, std::span<const Voigt> strain_increment) const {
   assert(stress.size() == strain_increment.size());
   constexpr std::size_t kBlock = 64;
   bool settled[kBlock];
+  const bool in_lanes = strength_.sin_phi > 0.0;  // Tresca's corner case is scalar only
+  std::size_t waiting[4];
+  int waiting_count = 0;
   for (std::size_t begin = 0; begin < stress.size(); begin += kBlock) {
     const std::size_t n = std::min(kBlock, stress.size() - begin);
     screen_elastic_trials(&stress[begin], &strain_increment[begin], n, elastic_stiffness_, strength_, settled);
     for (std::size_t k = 0; k < n; ++k) {
-      if (!settled[k]) return_from_trial(stress[begin + k]);
+      if (settled[k]) continue;
+      const Voigt& trial = stress[begin + k];
+      if (!in_lanes || trial[4] != 0.0 || trial[5] != 0.0) {
+        return_from_trial(stress[begin + k]);
+        continue;
+      }
+      waiting[waiting_count++] = begin + k;
+      if (waiting_count == 4) {
+        return_planar_trials(stress.data(), waiting, strength_, directions_);
+        waiting_count = 0;
+      }
     }
   }
+  for (int k = 0; k < waiting_count; ++k) return_from_trial(stress[waiting[k]]);
 }
 
 void MohrCoulomb::return_from_trial(Voigt& stress) const {

@@ -29,6 +29,8 @@ inline Lanes load_lanes(const double* p) {
 inline void store_lanes(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
 /// mask ? a : b lane by lane.
 inline Lanes select(LaneMask mask, Lanes a, Lanes b) { return (Lanes)((mask & (LaneMask)a) | (~mask & (LaneMask)b)); }
+/// mask ? a : b lane by lane, for masks.
+inline LaneMask select_mask(LaneMask mask, LaneMask a, LaneMask b) { return (mask & a) | (~mask & b); }
 /// std::max(a, b) lane by lane, with its semantics: b only where a < b (a NaN b is not taken).
 inline Lanes max_lanes(Lanes a, Lanes b) { return select(a < b, b, a); }
 /// |x| lane by lane (the sign bit cleared, as std::abs).

@@ -264,9 +264,10 @@ TEST_CASE("P-wave speed comes from the constrained modulus", "[mc][elastic]") {
 
 TEST_CASE("the batch update gives the single-point update's bits in every region, planar and 3D", "[mc][batch]") {
   // The batch takes the elastic test in vector lanes (screen_elastic_trials, four points
-  // at a time, the rest of a block of 64 one by one) and the return on ElasticTrial's
-  // scalar principal values where θθ is principal (the MPM): it must be the single-point
-  // update bit for bit, for batches of every length about the lanes and the block.
+  // at a time, the rest of a block of 64 one by one) and the returns where θθ is principal
+  // (the MPM) four at a time in lanes too (return_planar_trials, the batch's last few on
+  // ElasticTrial's scalar principal values): it must be the single-point update bit for
+  // bit, for batches of every length about the lanes and the block.
   std::mt19937_64 rng(4321);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const MohrCoulomb mc(sand(39.0, 5.0, 0.0));
