@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "models/voigt_lanes.hpp"
 #include "mpm/generate_particles.hpp"
 #include "mpm/stages.hpp"
 
@@ -100,69 +99,12 @@ struct SignalSpeed {
   long bad = 0;
 };
 
-/// A range's maxima for the CFL step: max 1/ρ, max |v|², max |σ| (a Gershgorin bound
-/// on the principal stresses of the (r, z) block, and σ_θθ), and how many particles have a
-/// non-finite state. Four particles per vector (models/voigt_lanes.hpp), the last ones
-/// one by one: the same maxima as one by one, since a maximum is exact in any order.
-struct SignalMaxima {
-  double stiffest = 0.0, speed2 = 0.0, stress = 0.0;
-  long bad = 0;
-};
-
-SignalMaxima signal_maxima(const Particles& p, std::size_t begin, std::size_t end) {
-  constexpr double kLargest = std::numeric_limits<double>::max();
-  SignalMaxima m;
-  std::size_t i = begin;
-  if (end - begin >= 4) {
-    Lanes stiffest{}, speed2{}, stress{};
-    LaneMask bad{};
-    for (; i + 4 <= end; i += 4) {
-      const Lanes inverse_density = load_lanes(&p.volume[i]) / load_lanes(&p.mass[i]);
-      const Lanes vr = load_lanes(&p.vr[i]), vz = load_lanes(&p.vz[i]);
-      const Lanes v2 = vr * vr + vz * vz;
-      Lanes sig[6];
-      to_lanes(p.stress[i].data(), sig);
-      const Lanes shear = abs_lanes(sig[3]);
-      const Lanes bound = max_lanes(max_lanes(abs_lanes(sig[0]) + shear, abs_lanes(sig[1]) + shear), abs_lanes(sig[2]));
-      bad -= ~(inverse_density > 0.0) | ~(abs_lanes(inverse_density) <= kLargest) | ~(abs_lanes(v2) <= kLargest) |
-             ~(abs_lanes(bound) <= kLargest);  // a true lane is −1
-      stiffest = max_lanes(stiffest, inverse_density);
-      speed2 = max_lanes(speed2, v2);
-      stress = max_lanes(stress, bound);
-    }
-    for (int k = 0; k < 4; ++k) {
-      m.stiffest = std::max(m.stiffest, stiffest[k]);
-      m.speed2 = std::max(m.speed2, speed2[k]);
-      m.stress = std::max(m.stress, stress[k]);
-      m.bad += bad[k];
-    }
-  }
-  for (; i < end; ++i) {
-    const double inverse_density = p.volume[i] / p.mass[i];
-    const double v2 = p.vr[i] * p.vr[i] + p.vz[i] * p.vz[i];
-    const Voigt& sig = p.stress[i];
-    const double bound =
-        std::max({std::abs(sig[0]) + std::abs(sig[3]), std::abs(sig[1]) + std::abs(sig[3]), std::abs(sig[2])});
-    if (!(inverse_density > 0.0) || !std::isfinite(inverse_density) || !std::isfinite(v2) || !std::isfinite(bound))
-      ++m.bad;
-    m.stiffest = std::max(m.stiffest, inverse_density);
-    m.speed2 = std::max(m.speed2, v2);
-    m.stress = std::max(m.stress, bound);
-  }
-  return m;
-}
-
-SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
+/// A group's maxima in a pass of its own, each thread its own part's particles
+/// (mpm/particle_bins.hpp).
+SignalMaxima group_signal_maxima(const Simulation& s, const MaterialGroup& g) {
   const Particles& p = s.particles;
-  // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
-  // particle's sum and need no square root per particle. |σ| (a bound on the largest
-  // principal stress) is the geometric stiffness of the current stress: it matters only
-  // where stresses approach the modulus (very soft bodies under gravity), and there
-  // the elastic c_p alone let the step run unstable (measured: an E = 1 kPa block
-  // collapsing under its own weight at Courant 1).
   double stiffest = 0.0, speed2 = 0.0, stress = 0.0;  // max 1/ρ, max |v|², max |σ|
   long bad = 0;
-  // Each thread its own part's particles (mpm/particle_bins.hpp); max and count are exact in any order.
   const bool ready = s.bins.covers(p.size());
   const int parts = ready ? s.bins.parts() : 1;
   FFP_OMP(omp parallel reduction(max : stiffest, speed2, stress) reduction(+ : bad) \
@@ -177,10 +119,24 @@ SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
     stress = std::max(stress, m.stress);
     bad += m.bad;
   }
+  return {stiffest, speed2, stress, bad};
+}
+
+/// `formed`: the maxima update_stresses formed (Simulation::stressed_signal), or null.
+SignalSpeed signal_speed(const Simulation& s, std::size_t group, const SignalMaxima* formed) {
+  const MaterialGroup& g = s.groups[group];
+  // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
+  // particle's sum and need no square root per particle. |σ| (a bound on the largest
+  // principal stress) is the geometric stiffness of the current stress: it matters only
+  // where stresses approach the modulus (very soft bodies under gravity), and there
+  // the elastic c_p alone let the step run unstable (measured: an E = 1 kPa block
+  // collapsing under its own weight at Courant 1).
+  const SignalMaxima m = formed ? *formed : group_signal_maxima(s, g);
+  double stiffest = m.stiffest;
   // A disconnected particle is stress-free; it reconnects at the disconnection density.
   if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
-  const double speed = std::max(std::sqrt(speed2), s.rigid_speed_m_s);
-  return {std::sqrt((g.constrained_modulus() + stress) * stiffest) + speed, speed, bad};
+  const double speed = std::max(std::sqrt(m.speed2), s.rigid_speed_m_s);
+  return {std::sqrt((g.constrained_modulus() + m.stress) * stiffest) + speed, speed, m.bad};
 }
 
 [[noreturn]] void report_bad_particle(const Simulation& s) {
@@ -198,18 +154,22 @@ SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g) {
 
 }  // namespace
 
-double cfl_time_step_limit(const Simulation& s) {
+double cfl_time_step_limit(const Simulation& s) { return cfl_time_step_limit(s, {}); }
+
+double cfl_time_step_limit(const Simulation& s, const std::vector<std::optional<SignalMaxima>>& formed) {
   double fastest = 0.0;
-  for (const MaterialGroup& g : s.groups) {
-    const SignalSpeed signal = signal_speed(s, g);
+  for (std::size_t group = 0; group < s.groups.size(); ++group) {
+    const bool known = group < formed.size() && formed[group];
+    const SignalSpeed signal = signal_speed(s, group, known ? &*formed[group] : nullptr);
     if (signal.bad > 0) report_bad_particle(s);
-    fastest = std::max(fastest, g.begin < s.main_step_end ? signal.wave_and_speed : signal.speed);
+    fastest = std::max(fastest, s.groups[group].begin < s.main_step_end ? signal.wave_and_speed : signal.speed);
   }
   return s.grid.min_spacing() / fastest;
 }
 
 double group_time_step_limit(const Simulation& s, const MaterialGroup& g) {
-  const SignalSpeed signal = signal_speed(s, g);
+  const auto group = static_cast<std::size_t>(&g - s.groups.data());
+  const SignalSpeed signal = signal_speed(s, group, nullptr);
   if (signal.bad > 0) report_bad_particle(s);
   return s.grid.min_spacing() / signal.wave_and_speed;
 }

@@ -16,6 +16,7 @@
 #include "mpm/particle_bins.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/shape_functions.hpp"
+#include "mpm/signal_maxima.hpp"
 #include "mpm/stage_list.hpp"
 
 namespace ffp::mpm {
@@ -102,6 +103,9 @@ class Simulation {
   bool gravity_deferred = false;   ///< apply_gravity left m_i g to integrate_grid, right after it
   bool momentum_remapped = false;  ///< update_particles summed p_i = Σ S m v^{n+1} (MUSL) for map_velocities_to_grid
   std::vector<double> spin_dt;     ///< W_rz·Δt, W = ½(L − Lᵀ), for the Jaumann rate
+  /// Per group, the CFL maxima update_stresses formed as it stressed the group's particles,
+  /// for update_time_step right after it (empty otherwise; only that stage reads them).
+  std::vector<std::optional<SignalMaxima>> stressed_signal;
   /// Smoothing per (cell, body), slot = cell·bodies + body: volume, V-weighted Δε_v, mean stress.
   std::vector<double> cell_volume, cell_volumetric_strain, cell_mean_stress;
   std::vector<Voigt> cell_strain_increment, cell_stress;  ///< strain_smoothing full: whole cell-mean tensors
@@ -112,6 +116,9 @@ class Simulation {
 /// A subcycled group (past main_step_end) counts with its speed only: its own
 /// substeps keep its p-wave stable.
 double cfl_time_step_limit(const Simulation& simulation);
+/// The same limit, with the maxima of the groups that `formed` holds (update_stresses'
+/// Simulation::stressed_signal, this step's) instead of a pass of their own: the same bits.
+double cfl_time_step_limit(const Simulation& simulation, const std::vector<std::optional<SignalMaxima>>& formed);
 
 /// The same limit for one group alone, its p-wave included (a subcycled body's substep).
 double group_time_step_limit(const Simulation& simulation, const MaterialGroup& group);

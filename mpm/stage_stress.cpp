@@ -1,7 +1,10 @@
 /// Stress-side stages: anti-locking smoothing and the constitutive update.
 #include <algorithm>
+#include <optional>
 #include <span>
+#include <vector>
 
+#include "mpm/parallel.hpp"
 #include "mpm/stages.hpp"
 
 namespace ffp::mpm {
@@ -188,17 +191,41 @@ std::vector<double> cell_mean_density_limits(const Simulation& s) {
   return limit;
 }
 
+namespace {
+
+/// update_time_step runs right after update_stresses: the stress pass forms the CFL
+/// maxima of the particles it has in cache, and the time step makes no pass of its own.
+bool time_step_follows(const Simulation& s) {
+  const std::vector<Stage>& stages = s.stages.items();
+  const auto stress = std::ranges::find(stages, "update_stresses", &Stage::name);
+  return stress != stages.end() && stress + 1 != stages.end() &&
+         ((stress + 1)->name == "update_time_step" || (stress + 1)->name == "check_time_step");
+}
+
+/// One thread's maxima, on a cache line of its own.
+struct alignas(64) ThreadSignal {
+  SignalMaxima maxima;
+};
+
+}  // namespace
+
 // Jaumann rate (objective for large rotations), before the law:
 //   σ ← σ + ΔW σ − σ ΔW,  ΔW = [[0, w], [−w, 0]] in (r, z), w = W_rz Δt:
 //   σ_rr += 2wσ_rz,  σ_zz −= 2wσ_rz,  σ_rz += w(σ_zz − σ_rr);  σ_θθ unchanged.
 // Then σ ← law(σ, Δε) for each material group, one batch call per chunk, and
-// σ ← 0 where a granular particle has lost grain contact (ρ_p below the group's limit).
+// σ ← 0 where a granular particle has lost grain contact (ρ_p below the group's limit);
+// then, if the time step follows, the batch's CFL maxima (Simulation::stressed_signal).
 void update_stresses(Simulation& s) {
   constexpr std::size_t chunk = 512;
   std::vector<Voigt>& stress = s.particles.stress;
   std::vector<Voigt>& strain = s.particles.strain;
-  for (MaterialGroup& g : s.groups) {
+  const bool signal = time_step_follows(s);
+  s.stressed_signal.assign(signal ? s.groups.size() : 0, std::nullopt);
+  std::vector<ThreadSignal> thread_signal(signal ? static_cast<std::size_t>(std::max(1, thread_count())) : 0);
+  for (std::size_t group = 0; group < s.groups.size(); ++group) {
+    MaterialGroup& g = s.groups[group];
     if (g.begin >= s.main_step_end) continue;  // a subcycled body: stressed in its own substeps
+    std::fill(thread_signal.begin(), thread_signal.end(), ThreadSignal{});
     // Balanced batches (ParticleBins::for_each_particle_batch): a plastic return costs
     // several elastic updates, and the returns gather about the cone, in one part.
     s.bins.for_each_particle_batch(
@@ -229,7 +256,15 @@ void update_stresses(Simulation& s) {
               }
             }
           }
+          if (signal)
+            thread_signal[static_cast<std::size_t>(team_member())].maxima.merge(
+                signal_maxima(s.particles, first, last));
         });
+    if (signal) {
+      SignalMaxima maxima;
+      for (const ThreadSignal& t : thread_signal) maxima.merge(t.maxima);
+      s.stressed_signal[group] = maxima;
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 /// Jaumann rotation, time step.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -169,6 +170,28 @@ TEST_CASE("the CFL maxima take each particle, in vector lanes or after them, and
     P.vr[p] = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_AS(cfl_time_step_limit(s), StepFailure);
     P.vr[p] = 0.0;
+  }
+}
+
+TEST_CASE("the step's CFL maxima, formed by update_stresses as it stresses, are a pass of their own's",
+          "[mpm][time_step]") {
+  // 3,600 particles: seven and a bit batches of update_stresses. The fastest and the
+  // most stressed particle sit in late batches; the time step the step took (from the
+  // batches' maxima) must be the limit of a pass over the same end-of-step state.
+  ModelDescription m;
+  m.r_nodes_m = testing::nodes(0.0, 0.3, 30);
+  m.z_nodes_m = testing::nodes(0.0, 0.3, 30);
+  m.bodies.push_back(testing::elastic_body("b", 1e7, 0.25, 2000.0, BoxRegion{0, 0.2, 0, 0.2}, 0.0, -2.0, 3));
+  Simulation s(m);
+  REQUIRE(s.particles.size() == 3600);
+  const std::vector<Stage>& stages = s.stages.items();
+  const auto stress = std::ranges::find(stages, "update_stresses", &Stage::name);
+  REQUIRE((stress != stages.end() && (stress + 1)->name == "update_time_step"));  // the fused path
+  for (const std::size_t fastest : {3000, 3599}) {
+    s.particles.vr[fastest] = 40.0;
+    s.particles.stress[fastest - 700][3] = -5e7;
+    s.advance();
+    CHECK(s.dt_limit_s == cfl_time_step_limit(s));
   }
 }
 
