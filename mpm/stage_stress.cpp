@@ -221,6 +221,7 @@ void update_stresses(Simulation& s) {
   std::vector<Voigt>& strain = s.particles.strain;
   const bool signal = time_step_follows(s);
   s.stressed_signal.assign(signal ? s.groups.size() : 0, std::nullopt);
+  // One per thread of the batches' team, which has at most thread_count() members.
   std::vector<ThreadSignal> thread_signal(signal ? static_cast<std::size_t>(std::max(1, thread_count())) : 0);
   for (std::size_t group = 0; group < s.groups.size(); ++group) {
     MaterialGroup& g = s.groups[group];
