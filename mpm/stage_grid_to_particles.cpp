@@ -343,34 +343,48 @@ void move_particles_impl(Simulation& s) {
 
 using NodalArray = std::vector<double> NodalField::*;
 
-/// Δε_p, spin and V_p of one particle from the nodal velocities (vr, vz) of its field.
-template <int S>
-inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const double* __restrict vr,
-                                const double* __restrict vz, double dt, Voigt& de, double& spin_dt, double& volume) {
-  VelocityGradient L;
-  if (rows_fit<S>(grid, w)) {  // a row of nodes per vector (mpm/support_row.hpp)
-    using Vec = SupportRow<S>;
-    const Vec wr = load_support_row<S>(w.wr), gr = load_support_row<S>(w.gr);
-    Vec rr{}, rz{}, zr{}, zz{}, tt{};
-    for (int b = 0; b < S; ++b) {
-      const std::size_t i = grid.node(w.node_r, w.node_z + b);
-      const double wz = w.wz[b], gz = w.gz[b];
-      const Vec N = wr * wz, Gr = gr * wz, Gz = wr * gz;
-      const Vec vr_row = load_support_row<S>(vr + i), vz_row = load_support_row<S>(vz + i);
-      rr += vr_row * Gr;
-      rz += vr_row * Gz;
-      zr += vz_row * Gr;
-      zz += vz_row * Gz;
-      tt += vr_row * N;
-    }
+/// The velocity gradient's five sums by support rows (mpm/support_row.hpp): row b adds
+/// its nodal velocity rows times N = s_r s_z,b and G = (s_r' s_z,b, s_r s_z,b').
+template <class Vec>
+struct GradientRows {
+  Vec rr{}, rz{}, zr{}, zz{}, tt{};
+
+  void add(Vec wr, Vec gr, double wz, double gz, Vec vr_row, Vec vz_row) {
+    const Vec N = wr * wz, Gr = gr * wz, Gz = wr * gz;
+    rr += vr_row * Gr;
+    rz += vr_row * Gz;
+    zr += vz_row * Gr;
+    zz += vz_row * Gz;
+    tt += vr_row * N;
+  }
+  /// The rows summed; L_θθ = Σ S v_r / r.
+  VelocityGradient gradient(double inverse_r) const {
+    VelocityGradient L;
     L.rr = row_sum(rr);
     L.rz = row_sum(rz);
     L.zr = row_sum(zr);
     L.zz = row_sum(zz);
-    L.tt = row_sum(tt) * w.inverse_r;
-    apply_velocity_gradient(L, dt, de, spin_dt, volume);
+    L.tt = row_sum(tt) * inverse_r;
+    return L;
+  }
+};
+
+/// Δε_p, spin and V_p of one particle from the nodal velocities (vr, vz) of its field.
+template <int S>
+inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const double* __restrict vr,
+                                const double* __restrict vz, double dt, Voigt& de, double& spin_dt, double& volume) {
+  if (rows_fit<S>(grid, w)) {  // a row of nodes per vector (mpm/support_row.hpp)
+    using Vec = SupportRow<S>;
+    const Vec wr = load_support_row<S>(w.wr), gr = load_support_row<S>(w.gr);
+    GradientRows<Vec> sums;
+    for (int b = 0; b < S; ++b) {
+      const std::size_t i = grid.node(w.node_r, w.node_z + b);
+      sums.add(wr, gr, w.wz[b], w.gz[b], load_support_row<S>(vr + i), load_support_row<S>(vz + i));
+    }
+    apply_velocity_gradient(sums.gradient(w.inverse_r), dt, de, spin_dt, volume);
     return;
   }
+  VelocityGradient L;
   for (int b = 0; b < S; ++b) {  // a GIMP edge particle: node by node
     const std::size_t row = grid.node(w.node_r, w.node_z + b);
     for (int a = 0; a < S; ++a) {
@@ -396,44 +410,17 @@ inline void strain_increments_of_pair(const Grid& grid, const ShapeWeights& lowe
                                       double& spin_upper, double& volume_upper) {
   const Row wr_l = load_support_row<3>(lower.wr), gr_l = load_support_row<3>(lower.gr);
   const Row wr_u = load_support_row<3>(upper.wr), gr_u = load_support_row<3>(upper.gr);
-  Row rr_l{}, rz_l{}, zr_l{}, zz_l{}, tt_l{}, rr_u{}, rz_u{}, zr_u{}, zz_u{}, tt_u{};
+  GradientRows<Row> sums_l, sums_u;
   const std::size_t first = grid.node(lower.node_r, lower.node_z);
   const auto row_stride = static_cast<std::size_t>(grid.r.nodes());
   for (int row = 0; row < 4; ++row) {
     const std::size_t i = first + row_stride * static_cast<std::size_t>(row);
     const Row vr_row = load_support_row<3>(vr + i), vz_row = load_support_row<3>(vz + i);
-    if (row < 3) {
-      const double wz = lower.wz[row], gz = lower.gz[row];
-      const Row N = wr_l * wz, Gr = gr_l * wz, Gz = wr_l * gz;
-      rr_l += vr_row * Gr;
-      rz_l += vr_row * Gz;
-      zr_l += vz_row * Gr;
-      zz_l += vz_row * Gz;
-      tt_l += vr_row * N;
-    }
-    if (row > 0) {
-      const double wz = upper.wz[row - 1], gz = upper.gz[row - 1];
-      const Row N = wr_u * wz, Gr = gr_u * wz, Gz = wr_u * gz;
-      rr_u += vr_row * Gr;
-      rz_u += vr_row * Gz;
-      zr_u += vz_row * Gr;
-      zz_u += vz_row * Gz;
-      tt_u += vr_row * N;
-    }
+    if (row < 3) sums_l.add(wr_l, gr_l, lower.wz[row], lower.gz[row], vr_row, vz_row);
+    if (row > 0) sums_u.add(wr_u, gr_u, upper.wz[row - 1], upper.gz[row - 1], vr_row, vz_row);
   }
-  VelocityGradient L;
-  L.rr = row_sum(rr_l);
-  L.rz = row_sum(rz_l);
-  L.zr = row_sum(zr_l);
-  L.zz = row_sum(zz_l);
-  L.tt = row_sum(tt_l) * lower.inverse_r;
-  apply_velocity_gradient(L, dt, de_lower, spin_lower, volume_lower);
-  L.rr = row_sum(rr_u);
-  L.rz = row_sum(rz_u);
-  L.zr = row_sum(zr_u);
-  L.zz = row_sum(zz_u);
-  L.tt = row_sum(tt_u) * upper.inverse_r;
-  apply_velocity_gradient(L, dt, de_upper, spin_upper, volume_upper);
+  apply_velocity_gradient(sums_l.gradient(lower.inverse_r), dt, de_lower, spin_lower, volume_lower);
+  apply_velocity_gradient(sums_u.gradient(upper.inverse_r), dt, de_upper, spin_upper, volume_upper);
 }
 
 /// The same for particles first..last of `index` (p = index(k)).
