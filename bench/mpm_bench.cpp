@@ -11,7 +11,8 @@
 /// steps as fit in its time) a faster build ran further into the slump, on heavier
 /// steps, than a slower one. Per-stage times are printed once to stderr to show
 /// where time goes: FFP_MPM_BENCH_STAGES=1 over 50 steps after the first five,
-/// FFP_MPM_BENCH_STAGES=N over N steps.
+/// FFP_MPM_BENCH_STAGES=N over N steps (the reference FFP's too, after its first 200);
+/// the measured steps then follow those.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -133,6 +134,11 @@ void BM_FfpReferenceStep(benchmark::State& state) {
   d.contact.friction = std::tan(20.0 * kDegree);
   FfpRun run(d);
   for (int k = 0; k < 200; ++k) run.advance();
+  static std::set<long> printed;
+  const char* stage_steps = std::getenv("FFP_MPM_BENCH_STAGES");
+  if (stage_steps && printed.insert(state.range(0)).second)
+    print_stage_times(run.simulation(), ("FFP reference, " + std::to_string(state.range(0)) + " thread(s)").c_str(),
+                      std::max(50, std::atoi(stage_steps)));
   for (auto _ : state) run.advance();
   state.counters["particles"] = static_cast<double>(run.simulation().particles.size());
   state.counters["steps_per_s"] =
