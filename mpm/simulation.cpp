@@ -123,8 +123,7 @@ SignalMaxima group_signal_maxima(const Simulation& s, const MaterialGroup& g) {
 }
 
 /// `formed`: the maxima update_stresses formed (Simulation::stressed_signal), or null.
-SignalSpeed signal_speed(const Simulation& s, std::size_t group, const SignalMaxima* formed) {
-  const MaterialGroup& g = s.groups[group];
+SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g, const SignalMaxima* formed) {
   // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
   // particle's sum and need no square root per particle. |σ| (a bound on the largest
   // principal stress) is the geometric stiffness of the current stress: it matters only
@@ -160,7 +159,7 @@ double cfl_time_step_limit(const Simulation& s, const std::vector<std::optional<
   double fastest = 0.0;
   for (std::size_t group = 0; group < s.groups.size(); ++group) {
     const bool known = group < formed.size() && formed[group];
-    const SignalSpeed signal = signal_speed(s, group, known ? &*formed[group] : nullptr);
+    const SignalSpeed signal = signal_speed(s, s.groups[group], known ? &*formed[group] : nullptr);
     if (signal.bad > 0) report_bad_particle(s);
     fastest = std::max(fastest, s.groups[group].begin < s.main_step_end ? signal.wave_and_speed : signal.speed);
   }
@@ -168,8 +167,7 @@ double cfl_time_step_limit(const Simulation& s, const std::vector<std::optional<
 }
 
 double group_time_step_limit(const Simulation& s, const MaterialGroup& g) {
-  const auto group = static_cast<std::size_t>(&g - s.groups.data());
-  const SignalSpeed signal = signal_speed(s, group, nullptr);
+  const SignalSpeed signal = signal_speed(s, g, nullptr);
   if (signal.bad > 0) report_bad_particle(s);
   return s.grid.min_spacing() / signal.wave_and_speed;
 }
