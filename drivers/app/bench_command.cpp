@@ -12,7 +12,7 @@
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/processor_name.hpp"
-#include "drivers/app/version.hpp"
+#include "drivers/app/program_version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/scene/scene_error.hpp"
 #include "reports/run_pool.hpp"
@@ -50,7 +50,7 @@ int command_bench(const BenchOptions& options) {
     std::vector<std::vector<nlohmann::json>> summaries(requests.size());
     for (int r = 0; r < repeats; ++r) {
       // A fresh cache root each time: every repeat really runs.
-      const auto outcomes = run_all("/proc/self/exe", requests, scratch / std::to_string(r), FFP_VERSION, 1);
+      const auto outcomes = run_all("/proc/self/exe", requests, scratch / std::to_string(r), program_version(), 1);
       for (std::size_t i = 0; i < outcomes.size(); ++i) {
         if (outcomes[i].exit_code != 0) continue;
         std::ifstream in(outcomes[i].out_dir / "summary.json");

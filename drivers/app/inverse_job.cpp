@@ -20,8 +20,8 @@
 
 #include "drivers/app/inverse_scene.hpp"
 #include "drivers/app/kinds.hpp"
+#include "drivers/app/program_version.hpp"
 #include "drivers/app/record_output.hpp"
-#include "drivers/app/version.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "drivers/triaxial_test.hpp"
 #include "reports/plot.hpp"
@@ -135,7 +135,7 @@ void InverseJob::run(RunContext& context) {
   auto run_points = [&](const std::vector<std::vector<double>>& points) {
     std::vector<RunRequest> requests;
     for (const auto& x : points) requests.push_back(request(x));
-    return run_all("/proc/self/exe", requests, runs, FFP_VERSION, jobs, scheduler);
+    return run_all("/proc/self/exe", requests, runs, program_version(), jobs, scheduler);
   };
   const BatchEvaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
     ++batches;

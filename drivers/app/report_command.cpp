@@ -8,7 +8,7 @@
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/processor_name.hpp"
-#include "drivers/app/version.hpp"
+#include "drivers/app/program_version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "drivers/scene/scene_error.hpp"
@@ -79,7 +79,7 @@ int command_report(const ReportOptions& options) {
                             {}});
     }
     const std::vector<RunOutcome> first =
-        run_all("/proc/self/exe", all, cache, FFP_VERSION, jobs, scheduler, follow_ups);
+        run_all("/proc/self/exe", all, cache, program_version(), jobs, scheduler, follow_ups);
     std::vector<StudyResults> results;
     for (std::size_t k = 0, offset = 0; k < studies.size(); offset += studies[k].runs.size(), ++k) {
       const auto begin = first.begin() + static_cast<long>(offset);

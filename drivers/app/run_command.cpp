@@ -15,6 +15,7 @@
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/job.hpp"
+#include "drivers/app/program_version.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
@@ -24,7 +25,7 @@ namespace ffp {
 
 namespace fs = std::filesystem;
 
-std::string version_string() { return "ffp " FFP_VERSION; }
+std::string version_string() { return std::string("ffp ") + program_version(); }
 
 fs::path default_scenes_folder() {
   return fs::exists("data/scenes") ? fs::path("data/scenes") : fs::path(FFP_SOURCE_DIR) / "data/scenes";
@@ -97,7 +98,7 @@ int command_run(const RunOptions& a) {
     json summary = context.summary;
     summary["wall_time_s"] = wall;
     summary["steps"] = context.steps;
-    summary["ffp_version"] = FFP_VERSION;
+    summary["ffp_version"] = program_version();
     summary["threads"] = std::max(1u, std::thread::hardware_concurrency());
     summary["scene"] = loaded.echo;
     write_file_atomically(directory.path() / "summary.json", summary.dump(2) + "\n");

@@ -8,8 +8,8 @@
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/job.hpp"
+#include "drivers/app/program_version.hpp"
 #include "drivers/app/sweep_cases.hpp"
-#include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "reports/run_pool.hpp"
@@ -129,7 +129,7 @@ int command_sweep(const SweepOptions& options) {
     std::vector<RunRequest> requests;
     for (const SweepCase& c : cases) requests.push_back({c.label, scene_file, c.overrides});
     std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), jobs, out.string().c_str());
-    const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", FFP_VERSION, jobs);
+    const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", program_version(), jobs);
     std::vector<CaseResult> results;
     int failures = 0;
     for (std::size_t i = 0; i < outcomes.size(); ++i) {

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <csignal>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -100,6 +101,31 @@ TEST_CASE("version and help answer and succeed", "[cli]") {
   const auto h = run_ffp({"--help"}, scratch.path());
   CHECK(h.exit_code == 0);
   CHECK(h.out.find("run SCENE.json") != std::string::npos);
+}
+
+// The version is `git describe` at build time, not at configure time: a commit after
+// configuring must not leave the program (and every summary.json) naming an older one.
+TEST_CASE("the version names the commit the program was built from, in summary.json too", "[cli]") {
+  std::string head;
+  if (FILE* git = popen("git -C \"" FFP_SOURCE_DIR "\" rev-parse HEAD 2>/dev/null", "r")) {
+    char line[128] = {};
+    if (std::fgets(line, sizeof line, git)) head = line;
+    pclose(git);
+  }
+  if (head.size() < 40) {
+    WARN("the source tree is not a git checkout: nothing to compare the version with");
+    return;
+  }
+  Scratch scratch;
+  const auto v = run_ffp({"--version"}, scratch.path());
+  REQUIRE(v.exit_code == 0);
+  INFO("ffp --version: " << v.out << "HEAD: " << head);
+  CHECK(v.out.find(head.substr(0, 7)) != std::string::npos);
+  const auto file = scratch.write_json("scene.json", good_point_scene());
+  REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path()).exit_code == 0);
+  std::ifstream in(scratch.path() / "result" / "summary.json");
+  const std::string version = json::parse(in).at("ffp_version").get<std::string>();
+  CHECK(v.out.rfind("ffp " + version, 0) == 0);
 }
 
 TEST_CASE("an FFP run's particle fields carry the stress components beside p and q", "[cli]") {
