@@ -97,8 +97,9 @@ inline Weights1D gimp_weights(const GridAxis& axis, double x, double half_length
 /// One particle's weights for the current step (cached once per step: every
 /// transfer of the step uses the start-of-step positions).
 /// wr and gr carry a fourth, zero entry, so that a support row (its three nodes
-/// and the next) goes as one 256-bit vector (mpm/support_row.hpp).
-struct alignas(32) ShapeWeights {
+/// and the next) goes as one 256-bit vector (mpm/support_row.hpp). 128 bytes on a
+/// 64-byte boundary: each particle's weights are two whole cache lines.
+struct alignas(64) ShapeWeights {
   double wr[4], gr[4];                  ///< s_r, s_r' at nodes node_r + a (wr[3] = gr[3] = 0)
   double wz[3], gz[3];                  ///< s_z, s_z' at nodes node_z + b
   double inverse_r;                     ///< 1/r_p, for the hoop terms

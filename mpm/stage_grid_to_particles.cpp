@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
 #include "mpm/velocity_gradient.hpp"
@@ -174,7 +175,10 @@ void update_particles_impl(Simulation& s) {
             store_support_row<2>(momentum_z + run_node + nodes_r * b, sum_z[b]);
           }
         };
-        for (const std::uint32_t p : particles) {
+        const Prefetch prefetch(P.size());
+        for (std::size_t k = 0; k < particles.size(); ++k) {
+          prefetch.ahead(s.weights.data(), particles, k);
+          const std::uint32_t p = particles[k];
           const int field = s.bodies[P.body[p]].field;
           NodalField& f = s.grid.fields[static_cast<std::size_t>(field)];
           const ShapeWeights& w = s.weights[p];
@@ -250,7 +254,10 @@ void update_particles_impl(Simulation& s) {
         remap(f.momentum_z.data(), P.mass[p] * P.vz[p], P.mass[q] * P.vz[q]);
       };
       s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
+        const Prefetch prefetch(P.size());
         for (std::size_t k = 0; k < particles.size();) {
+          prefetch.ahead(s.weights.data(), particles, k);  // and the next: a pair takes two
+          prefetch.ahead(s.weights.data(), particles, k + 1);
           const std::size_t p = particles[k];
           const ShapeWeights& w = s.weights[p];
           if (k + 1 < particles.size() && p < n && rows_fit<S>(s.grid, w)) {
@@ -435,7 +442,9 @@ void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, In
   Voigt* strain_increment = s.strain_increment.data();
   double* spin = s.spin_dt.data();
   double* volume = P.volume.data();
+  const Prefetch prefetch(P.size());
   for (std::size_t k = first; k < last; ++k) {
+    if (k + kPrefetchAhead < last) prefetch.lines(weights + index(k + kPrefetchAhead));
     const std::size_t p = index(k);
     if (p >= n) continue;
     const std::uint8_t field = s.bodies[P.body[p]].field;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
 
@@ -154,7 +155,10 @@ void scatter_linear_strip(Simulation& s, std::span<const std::uint32_t> particle
       store_support_row<2>(arrays[a] + run_node + nodes_r, __builtin_shufflevector(sums[a], sums[a], 2, 3));
     }
   };
-  for (const std::uint32_t p : particles) {
+  const Prefetch prefetch(P.size());
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    prefetch.ahead(s.weights.data(), particles, k);
+    const std::uint32_t p = particles[k];
     const ShapeWeights& w = s.weights[p];
     const int field = s.bodies[P.body[p]].field;
     const std::size_t node = s.grid.node(w.node_r, w.node_z);
@@ -247,7 +251,10 @@ void scatter_gimp_strip(Simulation& s, std::span<const std::uint32_t> particles,
                         const std::vector<double>& limit) {
   const Particles& P = s.particles;
   auto field_of = [&](std::size_t p) { return s.bodies[P.body[p]].field; };
+  const Prefetch prefetch(P.size());
   for (std::size_t k = 0; k < particles.size();) {
+    prefetch.ahead(s.weights.data(), particles, k);  // and the next: a pair takes two
+    prefetch.ahead(s.weights.data(), particles, k + 1);
     const std::size_t p = particles[k];
     const ShapeWeights& w = s.weights[p];
     NodalField& f = s.grid.fields[field_of(p)];

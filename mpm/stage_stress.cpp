@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mpm/parallel.hpp"
+#include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
 
 namespace ffp::mpm {
@@ -171,7 +172,10 @@ void strip_cell_mean_stress(Simulation& s, int strip, std::span<const std::uint3
     return;
   }
   SlotSums sums(s.cell_volume, s.cell_mean_stress);
-  for (const std::uint32_t p : particles) {
+  const Prefetch prefetch(P.size());
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    prefetch.ahead(P.stress.data(), particles, k);
+    const std::uint32_t p = particles[k];
     if (!takes_part_in_cell_means(P, p, limit)) continue;
     sums.add(s.cell[p] * bodies + P.body[p], P.volume[p], P.volume[p] * trace(P.stress[p]) / 3.0);
   }
