@@ -21,6 +21,7 @@ inline constexpr std::size_t kPrefetchMinimum = 32'768;  ///< particles from whi
 class Prefetch {
  public:
   explicit Prefetch(std::size_t particles) : on_(particles >= kPrefetchMinimum) {}
+  bool on() const { return on_; }
 
   /// Asks for the cache lines of *item.
   template <class T>

@@ -444,7 +444,7 @@ void strain_increments_of(Simulation& s, std::size_t first, std::size_t last, In
   double* volume = P.volume.data();
   const Prefetch prefetch(P.size());
   for (std::size_t k = first; k < last; ++k) {
-    if (k + kPrefetchAhead < last) prefetch.lines(weights + index(k + kPrefetchAhead));
+    if (prefetch.on() && k + kPrefetchAhead < last) prefetch.lines(weights + index(k + kPrefetchAhead));
     const std::size_t p = index(k);
     if (p >= n) continue;
     const std::uint8_t field = s.bodies[P.body[p]].field;
