@@ -119,7 +119,7 @@ TEST_CASE("the version names the commit the program was built from, in summary.j
   Scratch scratch;
   const auto v = run_ffp({"--version"}, scratch.path());
   REQUIRE(v.exit_code == 0);
-  INFO("ffp --version: " << v.out << "HEAD: " << head);
+  INFO("ffp --version: " << v.out << "HEAD: " << head << "(fails on a program built before HEAD's commit: rebuild it)");
   CHECK(v.out.find(head.substr(0, 7)) != std::string::npos);
   const auto file = scratch.write_json("scene.json", good_point_scene());
   REQUIRE(run_ffp({"run", file.string(), "--out", "result", "--quiet"}, scratch.path()).exit_code == 0);
