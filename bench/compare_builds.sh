@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Side-by-side speed of builds of the MPM step: the protocol of every before/after
-# table in docs/kernel-speed.md, in one command.
+# table in docs/performance.md, in one command.
 #   bash bench/compare_builds.sh [-r ROUNDS] [-t "1 2"] [-s STAGE_STEPS] BUILD [BUILD...]
 # BUILD: a git revision (checked out into a worktree under $FFP_COMPARE_DIR, default
 # /tmp/ffp-compare, and its ffp_mpm_bench built there once), or the path of an

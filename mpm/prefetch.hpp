@@ -7,7 +7,7 @@
 /// particle-step and its MUSL update from 10.1–10.6 to 9.4–9.5 ns (8 and 32 places
 /// ahead gained less). With the data in cache the prefetches are only work: the
 /// reference FFP at 1 cm (6,086 particles) ran 2–3 % slower with them. So they are on
-/// from kPrefetchMinimum particles (docs/kernel-speed.md, stop 43). No result changes.
+/// from kPrefetchMinimum particles (docs/performance.md#design). No result changes.
 #include <cstddef>
 #include <cstdint>
 #include <span>

@@ -94,8 +94,8 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         "quantities are taken over fixed physical windows: the peak of the 2 ms running mean of the "
         "deceleration, the final penetration at 0.15 s and the soil's impulse on the FFP over 0–40 ms. Steps "
         "that shrink at one Courant number are not yet convergence: at Courant 0.25 the same usl series of final "
-        "penetrations does not shrink (docs/mesh-convergence.md), musl's goes on drifting, and a run of the same "
-        "scene at 0.125 cm, outside the report (27 minutes), continues the drift (docs/mesh-convergence.md).");
+        "penetrations does not shrink, musl's goes on drifting, and a run of the same scene at 0.125 cm, outside "
+        "the report (27 minutes), continues the drift (docs/verification.md#mesh-convergence).");
     const std::size_t n = kReferenceCells_m.size();
     std::vector<double> peak(n), depth(n), wall(n), impulse(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -390,9 +390,9 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
     ffp_depth_profiles_figure(results, runs, "Mesh convergence", "convergence_profiles.png", out);
     md.paragraph(
         "The soil's mean stress p at t = 0.04 s on the 1, 0.5 and 0.25 cm levels (colours up to each map's 98th "
-        "percentile of p). Stripes and layers a few cells apart, finer as h halves, are the pattern that the notes of "
-        "docs/mesh-convergence.md follow (the push of `cpt_mohr_coulomb.json` shows them more plainly; with a dilatant "
-        "flow, ψ = 20°, the same push has a smooth pressure bulb).");
+        "percentile of p). Stripes and layers a few cells apart, finer as h halves, are the pattern that "
+        "docs/verification.md#mesh-convergence describes (the push of `cpt_mohr_coulomb.json` shows them more plainly; "
+        "with a dilatant flow, ψ = 20°, the same push has a smooth pressure bulb).");
     for (std::size_t i = 1; i < n; ++i)
       include_run_figure(results, i, "plots/mean_stress_t0.040.png",
                          "convergence_p_" + fixed(100 * kReferenceCells_m[i], 2) + "cm.png",

@@ -70,7 +70,7 @@ Study ffp_compressibility_study(const std::filesystem::path& scenes_dir) {
         "peaks 2.3 % lower (2 ms mean) than the subcycled run at 1 cm. That single step's peak still moves with its "
         "own step (16.12, 16.28, 16.35 g at Courant 0.5, 0.25, 0.125, first order; extrapolated 16.42 g) while "
         "its final penetration stays within 0.25 %: against the converged single step the subcycled run peaks "
-        "0.5 % higher and penetrates 1.3–1.7 % more (docs/mesh-convergence.md, solver.subcycle).");
+        "0.5 % higher and penetrates 1.3–1.7 % more (docs/verification.md#subcycling).");
     const std::vector<LabelledRun> runs = {{0, "rigid"}, {1, "elastic 20 MPa"}, {2, "steel 200 GPa"}};
     md.table(ffp_table_header(), ffp_table_rows(results, runs));
     const double rigid = figure(results, 0, "wall_time_s");
