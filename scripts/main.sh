@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-cmake --preset release -DFFP_UNITY_BUILD=ON >/dev/null
+cmake --preset release -DFFP_UNITY_BUILD=ON -DFFP_BUILD_TESTS=OFF -DFFP_BUILD_BENCHMARKS=OFF >/dev/null
 # Only the program, as a unity build: the report needs nothing else (tests and benchmarks are a
 # third of the build; FFP_UNITY_BUILD in CMakeLists.txt).
 cmake --build --preset release --target ffp

@@ -1,16 +1,26 @@
 #!/usr/bin/env bash
 # Install the Debian packages ffp needs. Idempotent: on a machine that has
 # everything it installs nothing and says so.
+#   bash scripts/setup.sh          what the program and the main job need (compiler, libraries, gnuplot)
+#   bash scripts/setup.sh --tests  that, plus what only the tests, benchmarks and fuzzing use
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build
-  libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev
-  catch2 libbenchmark-dev gnuplot-nox libcli11-dev
-  clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
-  clang-format-14              # the layout check of the tests (.clang-format)
-  slurm-wlm munge parallel     # sweeps on a scheduler: the one-node Slurm of the tests, GNU parallel
+  libeigen3-dev libceres-dev libgsl-dev nlohmann-json3-dev libcli11-dev
+  gnuplot-nox                  # the figures of every run and of the report
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(
+    catch2 libbenchmark-dev      # the test suite and the benchmarks
+    clang-14 libclang-rt-14-dev  # libFuzzer and its sanitizers, for scripts/fuzz.sh
+    clang-format-14              # the layout check of the tests (.clang-format)
+    slurm-wlm munge parallel     # the scheduler tests: a one-node Slurm, GNU parallel
+  )
+elif [ -n "${1:-}" ]; then
+  echo "usage: bash scripts/setup.sh [--tests]" >&2
+  exit 2
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -8,7 +8,7 @@ conf=/etc/slurm/slurm.conf
 case "${1:-status}" in
   start)
     command -v slurmctld >/dev/null && command -v slurmd >/dev/null && command -v munged >/dev/null ||
-      { echo "slurm_local: slurm-wlm and munge are not installed (bash scripts/setup.sh --slurm)" >&2; exit 3; }
+      { echo "slurm_local: slurm-wlm and munge are not installed (bash scripts/setup.sh --tests)" >&2; exit 3; }
     [ "$(id -u)" = 0 ] || { echo "slurm_local: needs root to start munged, slurmctld and slurmd" >&2; exit 3; }
     if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed|allocated)'; then exit 0; fi
     # Never overwrite a real cluster's configuration: only one this script wrote.

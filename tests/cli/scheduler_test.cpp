@@ -125,7 +125,7 @@ TEST_CASE("a case that fails is listed with its error and a rerun of run_case.sh
 
 TEST_CASE("GNU parallel runs the emitted cases and collect gives the local sweep's table", "[cli][scheduler]") {
   if (shell("command -v parallel > /dev/null 2>&1") != 0) {
-    WARN("skipped: GNU parallel is not installed (bash scripts/setup.sh installs it)");
+    WARN("skipped: GNU parallel is not installed (bash scripts/setup.sh --tests installs it)");
     return;
   }
   Scratch scratch;
@@ -146,7 +146,7 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
           "[cli][scheduler][slurm]") {
   if (!slurm_cluster_up()) {
     WARN(
-        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh --tests; "
         "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
@@ -167,7 +167,7 @@ TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array
           "[cli][scheduler][slurm]") {
   if (!slurm_cluster_up()) {
     WARN(
-        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh --tests; "
         "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
@@ -201,7 +201,7 @@ TEST_CASE("an inverse fit with the Slurm scheduler runs each batch as a job arra
           "[cli][scheduler][slurm][inverse]") {
   if (!slurm_cluster_up()) {
     WARN(
-        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh; "
+        "skipped: no Slurm here (needs root and Debian's slurm-wlm and munge: bash scripts/setup.sh --tests; "
         "scripts/slurm_local.sh start says why it cannot start)");
     return;
   }
