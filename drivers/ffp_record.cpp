@@ -1,4 +1,5 @@
 #include "drivers/ffp_record.hpp"
+#include "drivers/record_plausibility.hpp"
 #include "models/math_constants.hpp"
 
 #include <algorithm>
@@ -16,18 +17,52 @@ std::string row_name(std::size_t index, const std::vector<double>& time_s) {
   return buffer;
 }
 
+/// The first sample at or after the given impact time (to round-off). The impact must lie within the
+/// record and leave at least one sample after it: a time outside is no impact the record holds.
+std::size_t sample_at_impact_time(const std::vector<double>& t, double impact_time_s) {
+  const double slack = 1e-12 * std::max(1.0, std::abs(impact_time_s));
+  auto refuse = [&](const char* why) {
+    char message[200];
+    std::snprintf(message, sizeof message, "impact_time_s = %.9g s %s: the record runs from %.9g s to %.9g s",
+                  impact_time_s, why, t.front(), t.back());
+    throw RecordError(message);
+  };
+  if (impact_time_s < t.front() - slack || impact_time_s > t.back() + slack) refuse("is outside the record");
+  const auto at = std::lower_bound(t.begin(), t.end(), impact_time_s - slack);
+  if (at + 1 == t.end()) refuse("leaves no sample after the impact");
+  return static_cast<std::size_t>(at - t.begin());
+}
+
 }  // namespace
 
-// The three forms as BlueDrop_Analysis_Lib (stevADUS) implements them, with
-// the sources it names; the original papers were not at hand to check them.
+// The rate laws as the FFP literature states them. Only the log law's source could be read
+// (Zambrano-Cruzatty & Yerro 2020, "Numerical simulation of a free fall penetrometer deployment using
+// the material point method", Soils and Foundations: eq. 6); for the others the original papers were
+// not found, so the forms are those of BlueDrop_Analysis_Lib
+// (lib/mechanics_functions/bearing_capacity_funcs.py, calc_qs_bearing_capacity), with the sources it
+// names and no equation number. q_dyn and q_sbc share the contact area, so q_dyn/q_sbc = F_dyn/F_0.
 double strain_rate_factor(const RateCorrection& c, double v, double v_ref, double v_impact) {
+  // f = 1 at or below v_ref, where the logarithm would fall below 1 and then below 0. For the asinh
+  // law, which is regular down to v = 0, this is a jump of (K/ln 10)·asinh(1) = 0.383 K at v_ref
+  // (BlueDrop applies it at every velocity); kept so that existing interpretations do not change.
   if (!(v > v_ref)) return 1.0;
   switch (c.law) {
-    case RateLaw::logarithmic:  // Dayal & Allen (1975): f = 1 + K log10(v/v_ref)
+    case RateLaw::logarithmic:
+      // Zambrano-Cruzatty & Yerro (2020) eq. 6, F_dyn = F_0 (1 + K log(v/v_ref)), v_ref = 2 cm/s (the CPT
+      // rate), after Albatal (2018); log is log10, as the K values quoted with it (0.2–1.5: Stoll et al.
+      // 2007, Stark et al. 2012, Albatal 2018; ≈ 0.75 in their own runs) assume. Dayal & Allen (1975,
+      // Can. Geotech. J. 12(3)) found the dynamic/static strength ratio linear in log(v/v_static) for
+      // clays, 0.13 to 550 cm/s, and no significant rate effect in sands (abstract; equation not seen).
       return 1.0 + c.k * std::log10(v / v_ref);
-    case RateLaw::brilli:  // Brilli et al.: f = 1 + K v_max log10(v/v_ref), K = 0.31 s/m for air drops
+    case RateLaw::brilli:
+      // Brilli et al. as BlueDrop_Analysis_Lib cites it ("2023" in one version, "20??" in another; the
+      // paper was not found): f = 1 + K v_max log10(v/v_ref), K = 0.31 s/m for air drops. v_max is the
+      // impact velocity here; BlueDrop takes the largest velocity of the impulse (higher by the rise
+      // after first contact).
       return 1.0 + c.k * v_impact * std::log10(v / v_ref);
-    case RateLaw::inverse_hyperbolic_sine:  // Randolph & Hope (2004), Stephan (2015): f = 1 + (K/ln 10) asinh(v/v_ref)
+    case RateLaw::inverse_hyperbolic_sine:
+      // Randolph & Hope (2004), Stephan (2015), as BlueDrop_Analysis_Lib cites them (papers not found):
+      // f = 1 + (K/ln 10) asinh(v/v_ref). For v ≫ v_ref, asinh x → ln 2x: f → 1 + K log10(2v/v_ref).
       return 1.0 + c.k / std::numbers::ln10 * std::asinh(v / v_ref);
   }
   return 1.0;
@@ -102,12 +137,19 @@ std::size_t detect_impact(const std::vector<double>& d, double threshold_g) {
   const auto first = std::find_if(d.begin(), d.end(), [&](double x) { return x > threshold_g; });
   if (first == d.end()) {
     const double top = d.empty() ? 0.0 : *std::max_element(d.begin(), d.end());
-    char buffer[200];
-    std::snprintf(
+    const double bottom = d.empty() ? 0.0 : *std::min_element(d.begin(), d.end());
+    char buffer[400];
+    const int length = std::snprintf(
         buffer, sizeof buffer,
         "no impact found: the net deceleration never exceeds impact_threshold_g = %g (its maximum is %.4g g); "
         "give a lower impact_threshold_g or the impact_time_s",
         threshold_g, top);
+    // An impact pulse read upside down sinks far below free fall's −1 g, where no free body goes.
+    if (bottom < kWrongSignBelow_g && length > 0 && static_cast<std::size_t>(length) < sizeof buffer)
+      std::snprintf(buffer + length, sizeof buffer - static_cast<std::size_t>(length),
+                    ". Its minimum, %.4g g, lies far below free fall's −1 g: if the channel has the wrong sign, "
+                    "negate the column",
+                    bottom);
     throw RecordError(buffer);
   }
   // Back to where the pulse begins to rise: before it the body falls (−1 g) or rests (0 g).
@@ -121,12 +163,7 @@ InterpretedRecord interpret_record(const std::vector<double>& t, const std::vect
   InterpretedRecord out;
   const double g = s.gravity_m_s2, M = s.mass_kg;
   if (s.impact_time_s) {
-    const auto at =
-        std::lower_bound(t.begin(), t.end(), *s.impact_time_s - 1e-12 * std::max(1.0, std::abs(*s.impact_time_s)));
-    if (at == t.end() || at + 1 == t.end())
-      throw RecordError("impact_time_s = " + std::to_string(*s.impact_time_s) +
-                        " is at or after the record's last sample (" + std::to_string(t.back()) + " s)");
-    out.impact_index = static_cast<std::size_t>(at - t.begin());
+    out.impact_index = sample_at_impact_time(t, *s.impact_time_s);
     out.impact_detected = false;
   } else {
     out.impact_index = detect_impact(d, s.impact_threshold_g);
@@ -155,7 +192,10 @@ InterpretedRecord interpret_record(const std::vector<double>& t, const std::vect
     const double v_next = v - g * 0.5 * (d[k] + d[k - 1]) * dt;
     z += 0.5 * (v + v_next) * dt;
     v = v_next;
-    // Soil bearing force (BlueDrop's air/water drop): F = m a + m g − ρ V g − ½ ρ C_D A v², a = g·d up.
+    // Soil bearing force: the rigid body's balance M a = M g − F (Zambrano-Cruzatty & Yerro 2020 eq. 1,
+    // no external load), a = −g·d down, gives F = M g (1 + d); the buoyancy ρ V g and drag ½ ρ C_D A v²
+    // of a drop through water or air are BlueDrop_Analysis_Lib's (calc_water_drop_dyn_bearing; the
+    // source it follows is not named): F = m a + m g − ρ V g − ½ ρ C_D A v², a = g·d up.
     const double force_N =
         M * g * (d[k] + 1.0) - buoyancy_N - 0.5 * s.fluid_density_kg_m3 * s.drag_coefficient * frontal_m2 * v * v;
     const double projected = s.tip.projected_m2(z), mantle = s.tip.mantle_m2(z);

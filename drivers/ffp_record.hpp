@@ -112,6 +112,9 @@ void check_record_channel(const std::vector<double>& time_s, const std::vector<d
 /// exceeds `threshold_g`. Throws RecordError when no sample does.
 std::size_t detect_impact(const std::vector<double>& deceleration_g, double threshold_g);
 
+/// Integrates the record from its impact (given, or detected) and derives q_dyn and q_sbc. Throws
+/// RecordError when no impact is found or settings.impact_time_s lies outside the record (or on its
+/// last sample). Whether the result can be a penetrometer's impact is record_plausibility.hpp's to say.
 InterpretedRecord interpret_record(const std::vector<double>& time_s, const std::vector<double>& deceleration_g,
                                    const RecordSettings& settings);
 

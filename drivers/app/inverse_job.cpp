@@ -23,6 +23,7 @@
 #include "drivers/app/program_version.hpp"
 #include "drivers/app/record_output.hpp"
 #include "drivers/output/csv_writer.hpp"
+#include "drivers/record_plausibility.hpp"
 #include "drivers/triaxial_test.hpp"
 #include "reports/plot.hpp"
 #include "reports/run_pool.hpp"
@@ -259,6 +260,9 @@ std::unique_ptr<Job> make_inverse_job(SceneReader& scene, const fs::path& scene_
     const RecordSamples samples = load_record(*inverse.record);
     try {
       record = interpret_record(samples.time_s, samples.deceleration_g, inverse.record->settings);
+      for (const std::string& w :
+           check_impact_kinematics(*record, inverse.record->settings.gravity_m_s2, samples.channel))
+        std::fprintf(stderr, "warning: %s: %s\n", inverse.record->record_csv.string().c_str(), w.c_str());
     } catch (const RecordError& e) {
       throw SceneError("record.record_csv: " + inverse.record->record_csv.string() + ": " + e.what());
     }

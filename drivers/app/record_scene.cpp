@@ -5,6 +5,7 @@
 
 #include "drivers/app/record_output.hpp"
 #include "drivers/output/csv_writer.hpp"
+#include "drivers/record_plausibility.hpp"
 #include "drivers/scene/material_scene.hpp"
 
 namespace ffp {
@@ -99,6 +100,11 @@ RecordSamples load_record(const RecordScene& scene) {
   // The sensor reads the specific force: +g at rest, 0 in free fall; the net deceleration is a/g − 1.
   if (sensor)
     for (double& d : out.deceleration_g) d = d / scene.settings.gravity_m_s2 - 1.0;
+  try {
+    check_deceleration_bound(out.time_s, out.deceleration_g, out.channel, scene.settings);
+  } catch (const RecordError& e) {
+    throw SceneError(name + ": " + e.what());
+  }
   return out;
 }
 

@@ -263,8 +263,7 @@ TEST_CASE("README's key tables list exactly the keys the readers accept", "[app]
     check_kind("record",
                reader_keys({{"record_reference", {}},
                             {"record_reference",
-                             {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null", "impact_velocity_m_s=null",
-                              "sensor_range_g=100"}},
+                             {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null", "sensor_range_g=100"}},
                             {"record_reference", {"sensor_range_m_s2=1000", "drag_coefficient=0.5"}}}),
                readme);
   }

@@ -20,9 +20,14 @@ namespace {
 
 constexpr double g = 9.81;
 
+json record_scene(const std::string& csv) {
+  return {{"kind", "record"}, {"name", "drop"}, {"record_csv", csv}, {"ffp", {{"mass_kg", 7.71}}}};
+}
+
 /// An accelerometer's record (sky positive, +g at rest): 0.05 s hanging, 0.2 s of
-/// free fall, then a 6 g reading (5 g net) until the end.
-std::string sensor_record(int rows_at_rest = 500, int rows_falling = 2000, int rows_in_soil = 1500) {
+/// free fall, then a 6 g reading (5 g net) in the soil until the end, which comes as the
+/// body stops (400 rows after a 0.2 s fall; a record going on would throw it back up).
+std::string sensor_record(int rows_at_rest = 500, int rows_falling = 2000, int rows_in_soil = 400) {
   std::ostringstream csv;
   csv << "time_s,acceleration_m_s2,pore_pressure_kPa\n";
   int k = 0;
@@ -36,8 +41,31 @@ std::string sensor_record(int rows_at_rest = 500, int rows_falling = 2000, int r
   return csv.str();
 }
 
-json record_scene(const std::string& csv) {
-  return {{"kind", "record"}, {"name", "drop"}, {"record_csv", csv}, {"ffp", {{"mass_kg", 7.71}}}};
+/// The shipped synthetic record of the reference drop (impact at t = 0, 5.6 m/s), each deceleration
+/// passed through `change` (its row index and value).
+template <class Change>
+std::string reference_record(Change change) {
+  std::ifstream in(FFP_SOURCE_DIR "/data/records/ffp_reference_synthetic.csv");
+  std::ostringstream csv;
+  csv.precision(17);
+  std::string line;
+  int row = 0;
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    if (line.empty() || line[0] == '#' || line.rfind("time_s", 0) == 0) {
+      csv << line << '\n';
+      continue;
+    }
+    csv << line.substr(0, comma) << ',' << change(row++, std::stod(line.substr(comma + 1))) << '\n';
+  }
+  return csv.str();
+}
+
+json reference_scene(const std::string& csv) {
+  json scene = record_scene(csv);
+  scene["impact_velocity_m_s"] = 5.6;
+  scene["impact_time_s"] = 0.0;
+  return scene;
 }
 
 std::string header_of(const fs::path& csv) {
@@ -78,10 +106,10 @@ TEST_CASE("bad records exit 2 naming the row and the column and write nothing", 
     std::string what, csv, must_mention;
     json extra = json::object();
   };
-  const std::string good = sensor_record(10, 100, 100);
+  const std::string good = sensor_record(10, 100, 20);
   std::string backwards = good, nan_cell = good;
   backwards.replace(backwards.find("\n0.005,"), 7, "\n0.0001,");
-  nan_cell.replace(nan_cell.find("\n0.015,") + 7, 1, "nan");
+  nan_cell.replace(nan_cell.find("\n0.011,") + 7, 1, "nan");
   const std::vector<Case> cases = {
       {"time going back", backwards, "data row 51"},
       {"a NaN cell", nan_cell, "acceleration_m_s2"},
@@ -137,4 +165,82 @@ TEST_CASE("an ffp run writes record.csv in the record kind's columns", "[cli][re
   const double v_end = run["final_velocity_m_s"].get<double>();
   const double bound = 0.5 * row_spacing * (5.6 - v_end + g * 0.03);
   CHECK(std::abs(record["final_penetration_m"].get<double>() - run["final_penetration_m"].get<double>()) < bound);
+}
+
+TEST_CASE("records no impact can produce exit 2 with the reason and write nothing", "[cli][record]") {
+  struct Case {
+    std::string what, csv;
+    std::vector<std::string> must_mention;
+    json extra = json::object();
+  };
+  const std::vector<Case> cases = {
+      {"the deceleration's sign flipped (the body would speed up from 5.6 to 11.2 m/s)",
+       reference_record([](int, double d) { return -d; }),
+       {"deceleration_g looks like it has the wrong sign", "never slows", "11.22 m/s", "negate the column"}},
+      {"two samples of 1e308 g",
+       reference_record([](int row, double d) { return row == 100 || row == 101 ? 1e308 : d; }),
+       {"column 'deceleration_g'", "data row 101", "1e+308 g", "beyond the ±7.66e+03 g"}},
+      {"impact_time_s after the record",
+       reference_record([](int, double d) { return d; }),
+       {"impact_time_s = 0.5 s is outside the record", "runs from 0 s to 0.15 s"},
+       {{"impact_time_s", 0.5}}},
+      {"impact_time_s before the record",
+       reference_record([](int, double d) { return d; }),
+       {"impact_time_s = -0.01 s is outside the record", "runs from 0 s to 0.15 s"},
+       {{"impact_time_s", -0.01}}},
+  };
+  for (const Case& c : cases) {
+    DYNAMIC_SECTION(c.what) {
+      Scratch scratch;
+      scratch.write("drop.csv", c.csv);
+      json scene = reference_scene("drop.csv");
+      scene.update(c.extra);
+      const auto file = scratch.write_json("record.json", scene);
+      const auto r = run_ffp({"run", file.string(), "--out", "out", "--quiet"}, scratch.path());
+      INFO(r.err);
+      CHECK(r.exit_code == 2);
+      CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      CHECK_THAT(r.err, Catch::StartsWith("error: drop.csv: ") || Catch::Contains("/drop.csv: "));
+      for (const std::string& m : c.must_mention) CHECK_THAT(r.err, Catch::Contains(m));
+      CHECK_FALSE(fs::exists(scratch.path() / "out"));
+      // `ffp check` refuses it the same way.
+      CHECK(run_ffp({"check", file.string()}, scratch.path()).exit_code == 2);
+    }
+  }
+}
+
+TEST_CASE("an implausible but possible record runs and says why in summary.json and on stderr", "[cli][record]") {
+  Scratch scratch;
+  // The sensor record with its impact time given 0.07 s before the real impact and the speed the
+  // body had then (g × 0.13 s of fall): it falls on to 1.961 m/s, 54 % above that, before the soil.
+  scratch.write("drop.csv", sensor_record());
+  json scene = record_scene("drop.csv");
+  scene["impact_time_s"] = 0.18;
+  scene["impact_velocity_m_s"] = g * 0.13;
+  const auto file = scratch.write_json("record.json", scene);
+  const auto r = run_ffp({"run", file.string(), "--out", "out", "--quiet"}, scratch.path());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("warning: ") && Catch::Contains("drop.csv") &&
+                        Catch::Contains("54% above the impact velocity") && Catch::Contains("too early"));
+  std::ifstream in(scratch.path() / "out" / "summary.json");
+  const json s = json::parse(in);
+  REQUIRE(s.contains("warnings"));
+  REQUIRE(s["warnings"].size() == 1);
+  CHECK_THAT(s["warnings"][0].get<std::string>(), Catch::Contains("rises to 1.961 m/s"));
+  // `ffp check` shows the doubt before a run.
+  const auto check = run_ffp({"check", file.string()}, scratch.path());
+  CHECK(check.exit_code == 0);
+  CHECK_THAT(check.out, Catch::Contains("warning: the velocity rises"));
+}
+
+TEST_CASE("a record without doubts has no warnings key in its summary", "[cli][record]") {
+  Scratch scratch;
+  const auto r =
+      run_ffp({"run", FFP_SOURCE_DIR "/data/scenes/record_reference.json", "--out", "out", "--quiet"}, scratch.path());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.empty());
+  std::ifstream in(scratch.path() / "out" / "summary.json");
+  CHECK_FALSE(json::parse(in).contains("warnings"));
 }
