@@ -61,13 +61,11 @@ bool write_heatmap_png(const HeatMap& map, const fs::path& png) {
     script << "plot $grid using 1:2:3 with image notitle\n";
   }
 
-  return draw_with_gnuplot(png, [&](const fs::path& temporary_png) {
-    std::ostringstream out;
-    out << "set terminal pngcairo size " << map.width_px << "," << map.height_px << " font 'Sans,10'\n";
-    out << "set output " << gnuplot_quoted(temporary_png.string()) << "\nset encoding utf8\n"
-        << script.str() << "unset output\n";
-    return out.str();
-  });
+  std::ostringstream figure;
+  figure << "set terminal pngcairo size " << map.width_px << "," << map.height_px << " font 'Sans,10'\n";
+  figure << "set output\nset encoding utf8\n" << script.str() << "unset output\n";
+  draw_with_gnuplot(png, figure.str());
+  return true;
 }
 
 }  // namespace ffp

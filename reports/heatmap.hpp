@@ -1,6 +1,7 @@
 #pragma once
 /// Heat maps of a scalar on a regular grid through gnuplot (pngcairo), with
-/// contour lines; skipped with a warning when gnuplot is missing, like plot.hpp.
+/// contour lines; skipped with a warning when gnuplot is missing, and failing
+/// (WriteFailure) when it cannot be drawn, like plot.hpp.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ struct HeatMap {
   int height_px = 700;
 };
 
-/// Write `map` to `png` (via a temporary file). Returns false if skipped.
+/// Write `map` to `png` (via a temporary file). Returns false if skipped (no gnuplot,
+/// or fewer than 2 × 2 values); throws WriteFailure when it cannot be drawn or written.
 bool write_heatmap_png(const HeatMap& map, const std::filesystem::path& png);
 
 }  // namespace ffp

@@ -1,14 +1,18 @@
 #include "reports/plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
+
+#include "drivers/output/checked_write.hpp"
+#include "reports/png_stream.hpp"
+#include "reports/subprocess.hpp"
 
 namespace ffp {
 
@@ -109,32 +113,42 @@ void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream
 /// The queue of the PlotBatch alive on this thread, if any.
 thread_local std::vector<PlotBatch::Item>* active_batch = nullptr;
 
-/// One figure's script: the terminal, its output file and the panels.
-std::string figure_script(const std::string& body, const fs::path& output_png, int width, int height) {
+/// One figure's script: the terminal, its output (gnuplot's standard output) and the panels.
+std::string figure_script(const std::string& body, int width, int height) {
   std::ostringstream script;
   script << "set terminal pngcairo size " << width << "," << height << " font 'Sans,10'\n";
-  script << "set output " << gnuplot_quoted(output_png.string()) << "\n";
+  script << "set output\n";
   // Plain text: '_' in scene names must not turn into subscripts.
   script << "set termoption noenhanced\nset grid\nset encoding utf8\n" << body << "unset output\n";
   return script.str();
 }
 
-/// Runs gnuplot on a script file (removed afterwards); its exit status is 0 and `log` empty on success.
-int run_gnuplot(const fs::path& script_file, std::string& log) {
-  const std::string command = "gnuplot " + gnuplot_quoted(script_file.string()) + " 2>&1";
-  int status = -1;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) log += buffer;
-    status = ::pclose(pipe);
+/// gnuplot run on a script: it reads the script from standard input and writes its
+/// pictures to standard output, so that neither a path nor a quoting rule is involved,
+/// and the PNG files are written by ffp, which checks every byte (pngcairo does not
+/// report a failed write: on a full disk it left truncated files and exit status 0).
+/// The script is loaded as the file /dev/stdin so that gnuplot's messages give its line.
+ProgramOutput run_gnuplot(const std::string& script) { return run_program({"gnuplot", "/dev/stdin"}, script); }
+
+/// Why gnuplot drew no complete picture for `png`: its first message, or its status.
+WriteFailure plot_failure(const fs::path& png, const ProgramOutput& run) {
+  if (run.status == -1) return WriteFailure(png, run.err);
+  std::string message;
+  std::istringstream lines(run.err);
+  for (std::string line; message.empty() && std::getline(lines, line);) {
+    const auto first = line.find_first_not_of(' ');
+    if (first != std::string::npos) message = line.substr(first);
   }
-  std::error_code ignored;
-  fs::remove(script_file, ignored);
-  return status;
+  const std::string script_name = "\"/dev/stdin\" ";
+  if (message.starts_with(script_name)) message = "script " + message.substr(script_name.size());
+  if (run.status == 0)
+    return WriteFailure(png, "gnuplot gave no complete PNG" + (message.empty() ? "" : ": " + message));
+  return WriteFailure(
+      png, "gnuplot failed (exit status " + std::to_string(run.status) + ")" + (message.empty() ? "" : ": " + message));
 }
 
-bool render_now(const std::string& body, const fs::path& png, int width, int height) {
-  return draw_with_gnuplot(png, [&](const fs::path& output) { return figure_script(body, output, width, height); });
+void render_now(const std::string& body, const fs::path& png, int width, int height) {
+  draw_with_gnuplot(png, figure_script(body, width, height));
 }
 
 bool render(const std::string& body, const fs::path& png, int width, int height) {
@@ -147,28 +161,17 @@ bool render(const std::string& body, const fs::path& png, int width, int height)
     active_batch->push_back({body, png, width, height});
     return true;
   }
-  return render_now(body, png, width, height);
+  render_now(body, png, width, height);
+  return true;
 }
 
 }  // namespace
 
-bool draw_with_gnuplot(const fs::path& png, const std::function<std::string(const fs::path&)>& script_for) {
-  const fs::path temporary_png = png.string() + ".tmp-" + std::to_string(::getpid());
-  const fs::path script_file = png.string() + ".gp-" + std::to_string(::getpid());
-  {
-    std::ofstream script(script_file);
-    script << script_for(temporary_png);
-  }
-  std::string log;
-  const int status = run_gnuplot(script_file, log);
-  std::error_code ignored;
-  if (status != 0 || !fs::exists(temporary_png)) {
-    fs::remove(temporary_png, ignored);
-    std::fprintf(stderr, "warning: gnuplot failed for %s: %s\n", png.string().c_str(), log.c_str());
-    return false;
-  }
-  fs::rename(temporary_png, png);
-  return true;
+void draw_with_gnuplot(const fs::path& png, const std::string& script) {
+  const ProgramOutput run = run_gnuplot(script);
+  const PngStream pictures = split_png_stream(run.out);
+  if (run.status != 0 || pictures.complete.size() != 1 || !pictures.rest.empty()) throw plot_failure(png, run);
+  write_file_atomically(png, pictures.complete.front());
 }
 
 bool write_png(const Plot& plot, const fs::path& png) {
@@ -214,31 +217,19 @@ void PlotBatch::finish() {
   if (items_.empty()) return;
   const std::vector<Item> items = std::move(items_);
   items_.clear();
-  const std::string pid = std::to_string(::getpid());
-  std::vector<fs::path> temporary(items.size());
-  const fs::path script_file = items.front().png.string() + ".gp-batch-" + pid;
-  {
-    std::ofstream script(script_file);
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      temporary[i] = items[i].png.string() + ".tmp-" + pid + "-" + std::to_string(i);
-      // reset: every figure starts from gnuplot's defaults, as in a process of its own
-      // (terminal and output are not reset, and each figure sets its own); its
-      // data blocks go with it.
-      script << "reset\n"
-             << figure_script(items[i].body, temporary[i], items[i].width_px, items[i].height_px) << "undefine $*\n";
-    }
+  std::string script;
+  for (const Item& item : items) {
+    // reset: every figure starts from gnuplot's defaults, as in a process of its own
+    // (terminal and output are not reset, and each figure sets its own); its
+    // data blocks go with it.
+    script += "reset\n" + figure_script(item.body, item.width_px, item.height_px) + "undefine $*\n";
   }
-  std::string log;
-  const int status = run_gnuplot(script_file, log);
-  bool complete = status == 0;
-  for (const auto& t : temporary) complete = complete && fs::exists(t);
-  std::error_code ignored;
-  if (complete) {
-    for (std::size_t i = 0; i < items.size(); ++i) fs::rename(temporary[i], items[i].png);
-    return;
-  }
-  for (const auto& t : temporary) fs::remove(t, ignored);
-  for (const auto& item : items) render_now(item.body, item.png, item.width_px, item.height_px);
+  const ProgramOutput run = run_gnuplot(script);
+  const PngStream pictures = split_png_stream(run.out);
+  // gnuplot stops at its first error: the pictures before it are whole, the next one failed.
+  if (run.status != 0 || pictures.complete.size() != items.size() || !pictures.rest.empty())
+    throw plot_failure(items[std::min(pictures.complete.size(), items.size() - 1)].png, run);
+  for (std::size_t i = 0; i < items.size(); ++i) write_file_atomically(items[i].png, pictures.complete[i]);
 }
 
 }  // namespace ffp

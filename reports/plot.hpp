@@ -1,9 +1,11 @@
 #pragma once
 /// PNG line plots through gnuplot (pngcairo). If gnuplot is not installed the
-/// plot is skipped with one warning on stderr: runs never fail for a figure.
+/// plot is skipped with one warning on stderr (a documented choice: the numbers
+/// are the result, figures are their view). A figure that an installed gnuplot
+/// cannot draw, or that cannot be written whole, throws WriteFailure naming the
+/// PNG: a run that lost a figure is not done.
 #include <cstddef>
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,7 +47,8 @@ struct ColourMap {
   int height_px = 700;
 };
 
-/// Write `plot` to `png` (via a temporary file). Returns false if skipped.
+/// Write `plot` to `png` (via a temporary file). Returns false if skipped (no gnuplot);
+/// throws WriteFailure when the figure cannot be drawn or written.
 bool write_png(const Plot& plot, const std::filesystem::path& png);
 
 /// Several plots stacked in one PNG (one column), e.g. depth/velocity/deceleration.
@@ -64,21 +67,21 @@ bool gnuplot_available();
 /// A gnuplot string in single quotes: only the quote itself needs doubling.
 std::string gnuplot_quoted(const std::string& text);
 
-/// Draws one PNG with gnuplot from the script that `script_for(temporary_png)` writes
-/// (it must set the terminal and its output to temporary_png): the script goes to a
-/// file beside `png`, and the picture is renamed to `png` only when gnuplot succeeds.
-/// On failure it warns on stderr with gnuplot's messages and returns false.
-bool draw_with_gnuplot(const std::filesystem::path& png,
-                       const std::function<std::string(const std::filesystem::path& temporary_png)>& script_for);
+/// Draws one PNG with gnuplot from `script`, which sets a PNG terminal and `set output`
+/// without a file name: gnuplot hands the picture back on its standard output and it
+/// is written to `png` (via a temporary file) only when it is one complete PNG. No
+/// path reaches gnuplot or a shell. Throws WriteFailure naming `png` with gnuplot's
+/// first message, or the cause of a failed write ("no space left on device").
+void draw_with_gnuplot(const std::filesystem::path& png, const std::string& script);
 
 /// While one is alive (on this thread), the figures above are queued instead of
 /// drawn (they return true when gnuplot is on PATH), and finish() draws them all in
 /// one gnuplot process, each from a `reset`: the same bytes as one process per figure
 /// (tests/reports/plot_test.cpp), without gnuplot's start-up for each (loading its
 /// libraries and fonts: ~0.07 s CPU a figure; an `ffp run` of an FFP draws six).
-/// Should gnuplot fail in the batch, each figure is drawn again on its own, so that
-/// the failure is warned about for its figure as without a batch. A batch that is
-/// destroyed unfinished (a run that failed or was interrupted) draws nothing.
+/// Should gnuplot fail in the batch, finish() throws WriteFailure naming the figure
+/// it failed on (gnuplot stops at its first error). A batch that is destroyed
+/// unfinished (a run that failed or was interrupted) draws nothing.
 /// Batches do not nest.
 class PlotBatch {
  public:
@@ -87,6 +90,7 @@ class PlotBatch {
   PlotBatch(const PlotBatch&) = delete;
   PlotBatch& operator=(const PlotBatch&) = delete;
   /// Draw the queued figures; the batch stays active (and empty) afterwards.
+  /// Throws WriteFailure as draw_with_gnuplot does.
   void finish();
   std::size_t queued() const { return items_.size(); }
 

@@ -15,7 +15,9 @@ std::string slurm_submit(const std::filesystem::path& sbatch_file);
 /// (progress lines, and a chance to throw on an interrupt).
 void slurm_wait(const std::string& id, const std::function<void()>& poll);
 
-/// A shell word: 'it''s' quoted for bash.
+/// A word for a shell script ffp writes (a sweep's run_case.sh, a report's commands.txt):
+/// in single quotes, each ' written as '\'' (close, an escaped quote, reopen), so that
+/// bash reads back exactly `word`. sbatch and squeue themselves run without a shell.
 std::string shell_quoted(const std::string& word);
 
 }  // namespace ffp

@@ -2,6 +2,7 @@
 /// The Google Benchmark programs in bench/ measure the kernels (constitutive
 /// updates/s, MPM particle-steps/s); this measures what a user waits for.
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "drivers/app/commands.hpp"
 #include "drivers/app/processor_name.hpp"
 #include "drivers/app/program_version.hpp"
+#include "drivers/output/checked_write.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/scene/scene_error.hpp"
 #include "reports/run_pool.hpp"
@@ -30,6 +32,16 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t half = v.size() / 2;
   return v.size() % 2 == 1 ? v[half] : 0.5 * (v[half - 1] + v[half]);
+}
+
+/// printf onto the end of `text`.
+[[gnu::format(printf, 2, 3)]] void append(std::string& text, const char* format, ...) {
+  char line[512];
+  va_list arguments;
+  va_start(arguments, format);
+  std::vsnprintf(line, sizeof line, format, arguments);
+  va_end(arguments);
+  text += line;
 }
 
 }  // namespace
@@ -60,18 +72,19 @@ int command_bench(const BenchOptions& options) {
     std::error_code ignored;
     fs::remove_all(scratch, ignored);
 
-    std::printf(
-        "%s on %s, %u hardware threads, median of %d run%s (wall time inside the run, without process start)\n\n",
-        version_string().c_str(), this_processor().c_str(), std::thread::hardware_concurrency(), repeats,
-        repeats == 1 ? "" : "s");
+    std::string table;  // the result, written at once and checked
+    append(table,
+           "%s on %s, %u hardware threads, median of %d run%s (wall time inside the run, without process start)\n\n",
+           version_string().c_str(), this_processor().c_str(), std::thread::hardware_concurrency(), repeats,
+           repeats == 1 ? "" : "s");
     // The spread, (slowest − fastest)/median, says how far the machine moved between repeats.
-    std::printf(
-        "| scene | wall time [s] | spread [%%] | steps | steps/s | particles | particle-steps/s |\n"
-        "|---|---|---|---|---|---|---|\n");
+    append(table,
+           "| scene | wall time [s] | spread [%%] | steps | steps/s | particles | particle-steps/s |\n"
+           "|---|---|---|---|---|---|---|\n");
     int failures = 0;
     for (std::size_t i = 0; i < requests.size(); ++i) {
       if (summaries[i].empty()) {
-        std::printf("| %s | FAILED | | | | | |\n", requests[i].label.c_str());
+        append(table, "| %s | FAILED | | | | | |\n", requests[i].label.c_str());
         ++failures;
         continue;
       }
@@ -88,9 +101,10 @@ int command_bench(const BenchOptions& options) {
       if (wall.size() > 1 && t > 0.0)
         std::snprintf(spread, sizeof spread, "%.0f",
                       100.0 * (*std::ranges::max_element(wall) - *std::ranges::min_element(wall)) / t);
-      std::printf("| %s | %.3f | %s | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, spread, steps, steps / t,
-                  particle_columns);
+      append(table, "| %s | %.3f | %s | %.0f | %.3g | %s |\n", requests[i].label.c_str(), t, spread, steps, steps / t,
+             particle_columns);
     }
+    write_standard_output(table);
     return failures == 0 ? 0 : 1;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -1,8 +1,10 @@
 /// ffp: sand constitutive-model testbed and axisymmetric MPM solver for
 /// free-fall penetrometer impacts.
+#include <cstdio>
 #include <cstdlib>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/output/checked_write.hpp"
 #include "drivers/output/interrupt.hpp"
 
 namespace {
@@ -22,5 +24,13 @@ void wait_passively_by_default(int, char**, char**) { ::setenv("OMP_WAIT_POLICY"
 
 int main(int argc, char** argv) {
   ffp::install_interrupt_handlers();
-  return ffp::run_command_line(argc, argv);
+  const int code = ffp::run_command_line(argc, argv);
+  // What any command printed (help and version included) reached standard output, or the exit code says not.
+  try {
+    ffp::finish_standard_output();
+  } catch (const ffp::WriteFailure& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return code == 0 ? 1 : code;
+  }
+  return code;
 }

@@ -122,10 +122,14 @@ int command_report(const ReportOptions& options) {
       StudyOutput output{document, directory.path() / "figures", "figures", directory.path() / "tables"};
       // A study whose runs failed in a way its writer did not foresee is marked
       // failed here; every other study is still written.
+      // A figure or table that could not be written (WriteFailure) fails the whole report instead:
+      // a report that says done has every figure it names.
       try {
         studies[k].write(mine, output);
       } catch (const Interrupted&) {
         throw;
+      } catch (const WriteFailure& e) {
+        throw e.moved(directory.path(), out);
       } catch (const std::exception& e) {
         ++failures;
         document.paragraph(
@@ -142,8 +146,12 @@ int command_report(const ReportOptions& options) {
         "report took " +
         fixed(total, 1) + " s to assemble, including the runs made now.");
     document.table({"run", "status", "wall time [s]", "this time", "folder (in " + cache.string() + ")"}, run_rows);
-    write_file_atomically(directory.path() / "report.md", document.str());
-    directory.commit("report");
+    try {
+      write_file_atomically(directory.path() / "report.md", document.str(), Durability::synced);
+      directory.commit("report");
+    } catch (const WriteFailure& e) {
+      throw e.moved(directory.path(), out);
+    }
     std::fprintf(stderr, "wrote %s (%.1f s)%s\n", (out / "report.md").string().c_str(), total,
                  failures ? (" — " + std::to_string(failures) + " run(s) FAILED").c_str() : "");
     return failures == 0 ? 0 : 1;

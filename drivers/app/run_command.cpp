@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 #include <sys/prctl.h>
@@ -67,6 +67,36 @@ void stop_with_parent_run_pool() {
   if (std::to_string(::getppid()) != parent) std::raise(SIGTERM);  // the pool died before prctl
 }
 
+/// Runs the job into `directory` and marks it finished: its figures, summary.json and the
+/// folder's manifest, each write checked. A file that cannot be written fails the run
+/// (WriteFailure, named where the user will look for it); the target is then left as it was.
+/// Returns the run's wall time.
+double run_into(RunDirectory& directory, LoadedScene& loaded, RunContext& context) {
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    {
+      // The run's figures, drawn by one gnuplot process once it has finished (an FFP run's six
+      // took ~0.8 s CPU in six processes, ~0.4 s in one); none if it fails.
+      PlotBatch figures;
+      loaded.job->run(context);
+      figures.finish();
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    json summary = context.summary;
+    summary["wall_time_s"] = wall;
+    summary["steps"] = context.steps;
+    summary["ffp_version"] = program_version();
+    summary["threads"] = std::max(1u, std::thread::hardware_concurrency());
+    summary["scene"] = loaded.echo;
+    write_file_atomically(directory.path() / "summary.json", summary.dump(2) + "\n", Durability::synced);
+    throw_if_interrupted();
+    directory.commit(loaded.echo["kind"].get<std::string>() + " run");
+    return wall;
+  } catch (const WriteFailure& e) {
+    throw e.moved(directory.path(), directory.target());
+  }
+}
+
 int report_error(const std::exception& e, int code) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return code;
@@ -86,24 +116,7 @@ int command_run(const RunOptions& a) {
     context.show_progress = !a.quiet;
     context.jobs = a.jobs;
     context.slurm = a.slurm;
-    const auto start = std::chrono::steady_clock::now();
-    {
-      // The run's figures, drawn by one gnuplot process once it has finished (an FFP run's six
-      // took ~0.8 s CPU in six processes, ~0.4 s in one); none if it fails.
-      PlotBatch figures;
-      loaded.job->run(context);
-      figures.finish();
-    }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    json summary = context.summary;
-    summary["wall_time_s"] = wall;
-    summary["steps"] = context.steps;
-    summary["ffp_version"] = program_version();
-    summary["threads"] = std::max(1u, std::thread::hardware_concurrency());
-    summary["scene"] = loaded.echo;
-    write_file_atomically(directory.path() / "summary.json", summary.dump(2) + "\n");
-    throw_if_interrupted();
-    directory.commit(loaded.echo["kind"].get<std::string>() + " run");
+    const double wall = run_into(directory, loaded, context);
     if (!a.quiet) std::fprintf(stderr, "wrote %s (%.2f s)\n", out.string().c_str(), wall);
     return 0;
   } catch (const SceneError& e) {
@@ -112,13 +125,16 @@ int command_run(const RunOptions& a) {
     std::fputs("interrupted: no result written\n", stderr);
     return 130;
   } catch (const RunFailure& e) {
-    if (e.reproducer().is_object()) {
-      const fs::path file = fs::path("failed-step.json");
+    if (!e.reproducer().is_object()) return report_error(e, 1);
+    const fs::path file = fs::path("failed-step.json");
+    try {
       write_file_atomically(file, e.reproducer().dump(2) + "\n");
       std::fprintf(stderr, "error: %s\n  a scene that repeats the failing step: %s\n", e.what(), file.string().c_str());
-      return 1;
+    } catch (const WriteFailure& unsaved) {
+      std::fprintf(stderr, "error: %s\n  (the scene that repeats the failing step was not saved: %s)\n", e.what(),
+                   unsaved.what());
     }
-    return report_error(e, 1);
+    return 1;
   } catch (const std::exception& e) {
     return report_error(e, 1);
   }
@@ -127,10 +143,12 @@ int command_run(const RunOptions& a) {
 int command_check(const RunOptions& a) {
   try {
     LoadedScene loaded = load(a);
-    std::printf("%s: valid %s scene '%s'\n", a.scene_file.c_str(), loaded.echo["kind"].get<std::string>().c_str(),
-                loaded.echo["name"].get<std::string>().c_str());
-    loaded.job->describe(std::cout);
-    std::cout << "resolved scene (defaults filled in):\n" << loaded.echo.dump(2) << "\n";
+    std::ostringstream text;  // check's result, written at once and checked: `ffp check S > /dev/full` fails
+    text << a.scene_file << ": valid " << loaded.echo["kind"].get<std::string>() << " scene '"
+         << loaded.echo["name"].get<std::string>() << "'\n";
+    loaded.job->describe(text);
+    text << "resolved scene (defaults filled in):\n" << loaded.echo.dump(2) << "\n";
+    write_standard_output(text.str());
     return 0;
   } catch (const SceneError& e) {
     return report_error(e, 2);

@@ -44,7 +44,7 @@ std::vector<std::string> split_values(const std::string& list) {
 
 /// Writes sweep.csv from the collected cases, lists the missing and failed ones; exit 0 only when all finished.
 int report_collected(const fs::path& dir, const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
-  write_file_atomically(dir / kSweepTable, sweep_table(keys, cases));
+  write_file_atomically(dir / kSweepTable, sweep_table(keys, cases), Durability::synced);
   std::size_t missing = 0, failed = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::string what;
@@ -140,7 +140,7 @@ int command_sweep(const SweepOptions& options) {
                      outcomes[i].error.c_str());
       }
     }
-    write_file_atomically(out / kSweepTable, sweep_table(keys, results));
+    write_file_atomically(out / kSweepTable, sweep_table(keys, results), Durability::synced);
     std::fprintf(stderr, "wrote %s\n", (out / kSweepTable).string().c_str());
     return failures == 0 ? 0 : 1;
   } catch (const SceneError& e) {

@@ -140,7 +140,7 @@ void require_replaceable(const fs::path& folder, const std::string& option, bool
 
 void write_manifest(const fs::path& folder, const std::string& what) {
   nlohmann::json manifest = {{"written_by", "ffp"}, {"what", what}, {"files", entries_under(folder)}};
-  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n");
+  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n", Durability::synced);
 }
 
 void claim_persistent_folder(const fs::path& folder, const std::string& option, const std::string& what, bool force) {
@@ -171,7 +171,7 @@ void claim_persistent_folder(const fs::path& folder, const std::string& option, 
   fs::create_directories(folder);
   // A persistent folder's manifest only marks it as ffp's; its runs carry their own.
   nlohmann::json manifest = {{"written_by", "ffp"}, {"what", what}, {"files", nlohmann::json::array()}};
-  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n");
+  write_file_atomically(folder / kOutputManifest, manifest.dump(1) + "\n", Durability::synced);
 }
 
 void remove_stale_siblings(const fs::path& target) {
@@ -223,18 +223,8 @@ void RunDirectory::commit(const std::string& what) {
   if (had_previous) fs::rename(target_, old);
   fs::rename(working_, target_);
   committed_ = true;
+  sync_folder(target_.has_parent_path() ? target_.parent_path() : fs::path("."));
   if (had_previous) fs::remove_all(old, ec);
-}
-
-void write_file_atomically(const fs::path& file, const std::string& content) {
-  const fs::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    out << content;
-    if (!out) throw std::runtime_error("error writing " + temporary.string());
-  }
-  fs::rename(temporary, file);
 }
 
 }  // namespace ffp

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "drivers/output/checked_write.hpp"
 #include "drivers/scene/scene_error.hpp"
 
 namespace ffp {
@@ -68,7 +69,9 @@ class RunDirectory {
 
   /// Write the manifest and move the finished output to the target
   /// (atomically replaces a previous result). Checks the target again: a file
-  /// the user put there during the run is never deleted.
+  /// the user put there during the run is never deleted. The manifest and the
+  /// rename are on the disk when this returns; a manifest that cannot be
+  /// written (WriteFailure) leaves the target as it was.
   void commit(const std::string& what = "run");
 
  private:
@@ -78,8 +81,5 @@ class RunDirectory {
   bool force_ = false;
   bool committed_ = false;
 };
-
-/// Write a file via a temporary name and rename (no half-written files).
-void write_file_atomically(const std::filesystem::path& file, const std::string& content);
 
 }  // namespace ffp

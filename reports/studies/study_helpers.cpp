@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "drivers/output/checked_write.hpp"
+
 namespace ffp {
 
 namespace fs = std::filesystem;
@@ -15,7 +17,7 @@ bool include_run_figure(const StudyResults& results, std::size_t run, const std:
     out.document.paragraph("*(Figure missing: " + caption + " — the run failed or gnuplot was not available.)*");
     return false;
   }
-  fs::copy_file(source, out.figures_dir / name, fs::copy_options::overwrite_existing);
+  copy_file_atomically(source, out.figures_dir / name);
   out.document.figure(out.figures_relative + "/" + name, caption);
   return true;
 }

@@ -29,8 +29,10 @@ class Scratch {
   std::filesystem::path path_;
 };
 
-/// Run `ffp ARGS...` inside `cwd`.
-CommandResult run_ffp(const std::vector<std::string>& args, const std::filesystem::path& cwd);
+/// Run `ffp ARGS...` inside `cwd`; its standard output goes to `stdout_to` when given
+/// (e.g. /dev/full), else into the result.
+CommandResult run_ffp(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                      const std::filesystem::path& stdout_to = {});
 
 /// A small valid point scene (MC triaxial), for tests to break one key at a time.
 nlohmann::json good_point_scene();
