@@ -100,14 +100,14 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
     commands << "\n";
   }
   write_file_atomically(batch / "commands.txt", commands.str());
-  write_file_atomically(
-      batch / "batch.sbatch",
-      "#!/usr/bin/env bash\n#SBATCH --job-name=ffp-report\n#SBATCH --array=0-" + std::to_string(pending.size() - 1) +
-          "\n#SBATCH --output=" + (batch / "task-%a.out").string() + "\nset -u\ncd " + shell_quoted(batch.string()) +
-          "\nexport OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n"
-          "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" commands.txt)\n"
-          "eval \"$line\" 2> \"task-$SLURM_ARRAY_TASK_ID.err\"\n"
-          "echo $? > \"task-$SLURM_ARRAY_TASK_ID.exit\"\n");
+  write_file_atomically(batch / "batch.sbatch",
+                        "#!/usr/bin/env bash\n#SBATCH --job-name=ffp-report\n#SBATCH --array=0-" +
+                            std::to_string(pending.size() - 1) + "\n" + sbatch_folder_lines(batch, "task-%a.out") +
+                            "set -u\ncd " + shell_quoted(batch.string()) +
+                            "\nexport OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n"
+                            "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" commands.txt)\n"
+                            "eval \"$line\" 2> \"task-$SLURM_ARRAY_TASK_ID.err\"\n"
+                            "echo $? > \"task-$SLURM_ARRAY_TASK_ID.exit\"\n");
   const auto start = std::chrono::steady_clock::now();
   const std::string job = slurm_submit(batch / "batch.sbatch");
   std::fprintf(stderr, "runs: Slurm job %s, %zu array tasks (%s)\n", job.c_str(), pending.size(), batch.c_str());

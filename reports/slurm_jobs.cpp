@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "drivers/scene/scene_error.hpp"
 #include "reports/subprocess.hpp"
 
 namespace ffp {
@@ -12,6 +13,24 @@ std::string shell_quoted(const std::string& word) {
   std::string out = "'";
   for (char c : word) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
   return out + "'";
+}
+
+std::string sbatch_quoted(const std::string& value) {
+  if (value.find_first_of("\n\r") != std::string::npos)
+    throw SceneError("'" + value + "': a path with a line break cannot be handed to Slurm (#SBATCH lines)");
+  std::string out = "\"";
+  for (char c : value) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string sbatch_folder_lines(const std::filesystem::path& folder, const std::string& output_pattern) {
+  const std::string path = folder.string();
+  const bool pattern_safe = path.find_first_of("%\\") == std::string::npos;
+  return "#SBATCH --chdir=" + sbatch_quoted(path) +
+         "\n#SBATCH --output=" + (pattern_safe ? output_pattern : std::string("/dev/null")) + "\n";
 }
 
 std::string slurm_submit(const std::filesystem::path& sbatch_file) {

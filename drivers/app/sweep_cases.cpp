@@ -160,13 +160,8 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
                    last +
                    "\n"
                    "#SBATCH --cpus-per-task=" +
-                   threads +
-                   "\n"
-                   "#SBATCH --output=" +
-                   (dir / "logs" / "slurm-%A_%a.out").string() +
-                   "\n"
-                   "# " +
-                   n + " cases, one per array task: sbatch slurm.sbatch (from any folder), then ffp collect " +
+                   threads + "\n" + sbatch_folder_lines(dir, "logs/slurm-%A_%a.out") + "# " + n +
+                   " cases, one per array task: sbatch slurm.sbatch (from any folder), then ffp collect " +
                    dir.string() +
                    "\n"
                    "exec bash " +

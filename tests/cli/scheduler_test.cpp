@@ -151,16 +151,17 @@ TEST_CASE("a real one-node Slurm runs the sweep as a job array and the collected
     return;
   }
   Scratch scratch;
-  const CommandResult slurm =
-      run_ffp(sweep_args({"--scheduler", "slurm", "--out", (scratch.path() / "slurm").string()}), scratch.path());
+  // A folder name that sbatch's own parsing of #SBATCH lines and its filename patterns would change.
+  const fs::path folder = scratch.path() / "slurm it's \"q\" #1 $HOME 50% \\ x";
+  const CommandResult slurm = run_ffp(sweep_args({"--scheduler", "slurm", "--out", folder.string()}), scratch.path());
   INFO(slurm.err);
   REQUIRE(slurm.exit_code == 0);
   CHECK(slurm.err.find("Slurm job") != std::string::npos);
-  CHECK(fs::exists(scratch.path() / "slurm" / "logs" / "case_0005.exit"));
+  CHECK(fs::exists(folder / "logs" / "case_0005.exit"));
   const CommandResult local =
       run_ffp(sweep_args({"--jobs", "2", "--out", (scratch.path() / "local").string()}), scratch.path());
   REQUIRE(local.exit_code == 0);
-  same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(scratch.path() / "slurm" / "sweep.csv"));
+  same_results(read_table(scratch.path() / "local" / "sweep.csv"), read_table(folder / "sweep.csv"));
 }
 
 TEST_CASE("report with the Slurm scheduler runs its uncached runs as a job array and reads them back",
