@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "drivers/output/checked_write.hpp"
+#include "drivers/output/interrupt.hpp"
 #include "reports/png_stream.hpp"
 #include "reports/subprocess.hpp"
 
@@ -131,7 +132,9 @@ std::string figure_script(const std::string& body, int width, int height) {
 ProgramOutput run_gnuplot(const std::string& script) { return run_program({"gnuplot", "/dev/stdin"}, script); }
 
 /// Why gnuplot drew no complete picture for `png`: its first message, or its status.
+/// A gnuplot ended by the user's Ctrl-C (it shares the terminal's signals) is an interruption.
 WriteFailure plot_failure(const fs::path& png, const ProgramOutput& run) {
+  throw_if_interrupted();
   if (run.status == -1) return WriteFailure(png, run.err);
   std::string message;
   std::istringstream lines(run.err);
