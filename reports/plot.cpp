@@ -131,15 +131,16 @@ std::string figure_script(const std::string& body, int width, int height) {
 /// The script is loaded as the file /dev/stdin so that gnuplot's messages give its line.
 ProgramOutput run_gnuplot(const std::string& script) { return run_program({"gnuplot", "/dev/stdin"}, script); }
 
-/// Why gnuplot drew no complete picture for `png`: its first message, or its status.
-/// A gnuplot ended by the user's Ctrl-C (it shares the terminal's signals) is an interruption.
+/// Why gnuplot drew no complete picture for `png`: its last message (gnuplot stops at its
+/// first error, after any warnings and the offending line), or its status. A gnuplot ended
+/// by the user's Ctrl-C (it shares the terminal's signals) is an interruption.
 WriteFailure plot_failure(const fs::path& png, const ProgramOutput& run) {
   throw_if_interrupted();
   if (run.status == -1) return WriteFailure(png, run.err);
   std::string message;
   std::istringstream lines(run.err);
-  for (std::string line; message.empty() && std::getline(lines, line);) {
-    const auto first = line.find_first_not_of(' ');
+  for (std::string line; std::getline(lines, line);) {
+    const auto first = line.find_first_not_of(" \t^");
     if (first != std::string::npos) message = line.substr(first);
   }
   const std::string script_name = "\"/dev/stdin\" ";
