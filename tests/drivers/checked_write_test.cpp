@@ -136,7 +136,7 @@ TEST_CASE("standard output that cannot be written fails with its cause", "[outpu
   CHECK(read_text(file) == "a result\n");
 }
 
-TEST_CASE("a copied file has the source's bytes; an unreadable source is named", "[output][write]") {
+TEST_CASE("a copied file has the source's bytes, and an unreadable source is named", "[output][write]") {
   Scratch scratch("ffp-checked-write");
   const std::string bytes("\x89PNG\r\n\x1a\n\0\0 binary", 18);
   const fs::path source = scratch.write("figure.png", bytes);

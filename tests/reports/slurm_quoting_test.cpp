@@ -17,7 +17,7 @@ TEST_CASE("a shell-quoted word is read back by bash exactly", "[reports][slurm]"
   CHECK(echoed.out == kAwkward);
 }
 
-TEST_CASE("an #SBATCH value keeps quotes, '#', '$' and backslashes; a line break is refused", "[reports][slurm]") {
+TEST_CASE("an #SBATCH value keeps quotes, '#', '$' and backslashes, and a line break is refused", "[reports][slurm]") {
   CHECK(ffp::sbatch_quoted(kAwkward) == "\"/runs/O'Brien drops, \\\"2024\\\" #1 $HOME `date` 50% \\\\ x\"");
   CHECK_THROWS_AS(ffp::sbatch_quoted("/runs/two\nlines"), ffp::SceneError);
 }
