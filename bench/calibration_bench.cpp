@@ -1,7 +1,7 @@
 /// One calibration of η on each reconstructed lab curve (data/lab/), as the
 /// `calibration` scenes run it: 9-point W(η) scan, Ceres fit, final curve; the
 /// element test at 1000 increments. Also one element test alone. Wall time per
-/// calibration is the figure the issue asks for (< 1 s).
+/// calibration is what a user waits for (under a second).
 #include <filesystem>
 #include <stdexcept>
 #include <string>

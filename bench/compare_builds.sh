@@ -11,8 +11,8 @@
 # host's drift (a third from hour to hour on the 2-core EPYC guests) falls on all of
 # them alike; one-thread runs are pinned to one core. Every run is BM_MpmStep on the
 # 102,400-particle sand block, a fixed 300 steps after five warm-up steps, linear and
-# GIMP. A revision whose benchmark predates the fixed window (stop 41) gets it patched
-# in, so that every build does the same work. Prints the median M particle-steps/s of
+# GIMP. A revision whose benchmark predates the fixed window (commit c15f4a0) gets it
+# patched in, so that every build does the same work. Prints the median M particle-steps/s of
 # each build, and each build's ratio to the first: the median and the range of the
 # rounds' ratios (a round's ratio compares runs minutes apart, not hours).
 # With -s N, each run also prints its stage timers over N steps (FFP_MPM_BENCH_STAGES).

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The reference FFP run beside busy processes (issue: "no collapse under load").
+# The reference FFP run beside busy processes: its wall time must not collapse when
+# other processes take the cores.
 #   bash bench/under_load.sh [FFP_BINARY] [REPEATS]
 # Prints the median wall time of: one thread and the default (the thread
 # governor) with two busy processes beside the run, and the default and

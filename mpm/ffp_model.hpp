@@ -87,7 +87,7 @@ struct DeformableFfp {
 enum class PicBlend : std::uint8_t {
   per_step,       ///< the core's rule: (1 − α) of PIC every step, whatever Δt is
   per_soil_step,  ///< (1 − α)·Δt/Δt_soil per step: the same damping per unit time at any Δt of one mesh
-  per_second,     ///< (1 − α)·Δt/Δt_1cm per step: the same damping per unit time on every mesh (issue 13)
+  per_second,     ///< (1 − α)·Δt/Δt_1cm per step: the same damping per unit time on every mesh
 };
 /// The cell of per_second's reference step Δt_1cm = 0.5·h/(c_p + |v0|): the reference FFP's 1 cm.
 inline constexpr double kPicReferenceCell_m = 0.01;

@@ -1,6 +1,6 @@
 #pragma once
-/// Contact of the soil's particles with a rigid body's exact outline (issue 13's
-/// second option), as an alternative to the node-based law of
+/// Contact of the soil's particles with a rigid body's exact outline, as an
+/// alternative to the node-based law of
 /// mpm/contact_law.hpp. Why: at nodes the contact surface is the staircase of
 /// the nodes taken as the body's, which sits up to a cell off a slanted flank;
 /// here each particle's own domain is tested against the exact outline.

@@ -16,8 +16,8 @@ StageList build_stages(const Simulation& simulation);
 /// The cell means of the strain smoothing leave out the particles of a granular
 /// body that are at or below its disconnection density (by default half the
 /// initial density: J = V/V0 ≥ 2): they carry no stress and neither give nor
-/// take the cell's mean (review F2: pushed off the axis to the shaft, they
-/// reached J = 10–36 and diluted the mean stress there).
+/// take the cell's mean (pushed off the axis to the shaft, they reached
+/// J = 10–36 and diluted the mean stress there).
 /// Per body: the density (kg/m³) at or below which a particle is left out of the cell means (0: none).
 std::vector<double> cell_mean_density_limits(const Simulation& s);
 inline bool takes_part_in_cell_means(const Particles& P, std::size_t p, const std::vector<double>& limit) {

@@ -18,7 +18,7 @@ void write_strain_map(const mpm::FfpRun& run, const std::string& name, double co
 
 /// The soil's mean stress p = −tr σ/3 (kPa, compression positive) the same way,
 /// plots/mean_stress_tT.TTT.png, coloured from 0 to the 98th percentile of p: the
-/// pattern of the pressure around the cone (the bands of README's issue 13 notes).
+/// pattern of the pressure around the cone (the bands docs/verification.md#mesh-convergence describes).
 void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const std::filesystem::path& plots);
 
 /// Fig. 7 (plots/time_histories.png: penetration, velocity, deceleration, reaction against time) and

@@ -24,7 +24,7 @@ const std::string kPicPerSecond = "solver.pic_blend=per_second";
 // The controls (pure FLIP; the tip between node rows) on the three coarser levels.
 constexpr std::size_t kControlLevels = 3;
 // The tip's phases between two node rows besides the level's own 0 (mesh.tip_offset_cells); 0.5 is
-// the "half a cell off". The four phases sample the staircase the moving mesh freezes.
+// "half a cell off", the farthest from a row. The four phases sample the staircase the moving mesh freezes.
 constexpr std::array<double, 3> kTipPhases = {0.25, 0.5, 0.75};
 constexpr std::size_t kRunsPerControlLevel = 1 + kTipPhases.size();  // pure FLIP and the phases
 // Where half a cell off sits among a level's phases (0 first, then kTipPhases).
@@ -75,7 +75,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
                                    {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}));
     study.runs.back().expected_wall_s = level_wall_s(h);  // as the level's own run
     for (double phase : kTipPhases) {
-      // The 0.5 phase keeps its label of earlier reports (the "half a cell off").
+      // The 0.5 phase keeps its label of earlier reports ("half a cell off").
       const std::string label = phase == 0.5 ? "tip half a cell off, " : "tip " + fixed(phase, 2) + " cell off, ";
       study.runs.push_back(
           scene_run(scenes_dir, "ffp_reference.json", label + fixed(100 * h, 2) + " cm",
@@ -197,7 +197,7 @@ Study ffp_convergence_study(const std::filesystem::path& scenes_dir) {
         "The tip at four phases between two node rows (mesh.tip_offset_cells 0, 0.25, 0.5, 0.75; 0 is the "
         "level's run above). The moving mesh freezes the cone's staircase for the whole run, so each phase is "
         "one sample of it; the range over the phases (as % of their mean) is the scatter any one run carries, "
-        "and the bias is the issue's measure, half a cell off against on a row.");
+        "and the bias is the run half a cell off against the run on a row.");
     md.table({"min cell [cm]", "z_f at 0 [cm]", "0.25", "0.5", "0.75", "mean [cm]", "range [%]", "bias at 0.5 [%]",
               "2 ms peak at 0 [g]", "0.25", "0.5", "0.75", "mean [g]", "range [%]"},
              phases);

@@ -79,7 +79,7 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir) {
     // K only where the embedded part of the cone spans at least three cells: above
     // that the contact acts on one or two node rows and F_0 is a few newtons, so
     // K = (F_dyn/F_0 − 1)/log10(v/v_ref) divides by a number that is mostly
-    // discretisation (review F6: K = 8–31 there at 1 cm).
+    // discretisation (measured: K = 8–31 there at 1 cm).
     const auto summary = results.summary(0);
     const double h = summary.contains("scene") ? summary["scene"]["mesh"]["min_cell_m"].get<double>() : 0.01;
     const double shallowest = 3.0 * h;

@@ -1,4 +1,4 @@
-/// Error against run time of the constitutive integration (issue: models).
+/// Error against run time of the constitutive integration.
 #include "drivers/integration_study.hpp"
 #include "reports/studies/studies.hpp"
 #include "reports/studies/study_helpers.hpp"

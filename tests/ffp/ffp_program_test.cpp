@@ -1,4 +1,4 @@
-/// The issue's checks on what the `ffp` program writes (history.csv,
+/// Checks on what the `ffp` program writes (history.csv,
 /// summary.json) for the reference scene on a coarse (2 cm) mesh: impulse and
 /// momentum, the weight carried at rest, no deep intrusion; and the CPT's push
 /// speed. Each run takes a second or a few.
@@ -95,7 +95,7 @@ TEST_CASE(
     "reference FFP on 2 cm and 1 cm: no soil particle deeper inside than a quarter cell (contact.project_particles by "
     "default)",
     "[ffp][program][intrusion][projection]") {
-  // Issue 13: without the projection the deepest particle creeps in while the sand slides up
+  // Without the projection the deepest particle creeps in while the sand slides up
   // the cone's upper flank (0.07 cells at 2 cm, 0.14 at 1 cm by 0.04 s, 0.34 and 0.41 at 0.5 and
   // 0.25 cm by the end). With it every particle found inside after a step is put back onto the
   // outline, so what is left is round-off, and one step's intrusion (before the projection) is
@@ -136,7 +136,8 @@ TEST_CASE(
 TEST_CASE("FFP at rest on 2 cm: the reaction equals its weight (75.6 N) within 5 %", "[ffp][program][rest]") {
   // Dropped at 1 m/s it stops within ~0.1 s; the reaction then oscillates slowly
   // (the body bouncing on the elastic sand, undamped), so the mean over the last
-  // 0.15 s (several periods) is compared. 5 %: the issue's tolerance.
+  // 0.15 s (several periods) is compared. 5 %: the part of a period left over in the
+  // window biases the mean of an undamped swing by a few per cent.
   ScratchDir scratch;
   const auto out = scratch.path() / "run";
   REQUIRE(run_program({"run", scene_path("ffp_reference.json"), "--out", out.string(), "--quiet", "--set",
@@ -195,8 +196,8 @@ TEST_CASE("CPT: the static reaction F_0 pushed at 0.25 and at 0.125 m/s agrees w
 TEST_CASE("reference FFP on 2 cm: the tip half a cell off a node row moves the final penetration by under 3 %",
           "[ffp][program][staircase]") {
   // The staircase of a cone that does not conform to the grid is frozen when the tip
-  // sits on a node row; half a cell off it the other way. The issue's bound is 3 %
-  // of the final penetration at half a cell. Measured here: 16.42 / 16.31 cm (−0.7 %).
+  // sits on a node row; half a cell off it the other way. Bound 3 % of the final
+  // penetration: half of the 6 % that the half cell itself (1 cm) is of it. Measured here: 16.42 / 16.31 cm (−0.7 %).
   // It is not a bound on the staircase as a whole: the quarter phases give 17.43 and
   // 17.86 cm (+6.2 %, +8.8 %), and at 1 cm half a cell gives +3.8 % (the report's
   // convergence study tables the four phases at 2, 1 and 0.5 cm).

@@ -1,7 +1,7 @@
 #pragma once
 /// Running the `ffp` program from the FFP tests (FFP_BINARY) and reading its
-/// outputs back: the checks of the issue are stated on history.csv and
-/// summary.json, so they are tested there.
+/// outputs back: the FFP's checks are stated on history.csv and summary.json,
+/// what a user reads, so they are tested there.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>

@@ -54,7 +54,7 @@ TEST_CASE("thick-walled cylinder under internal pressure: radial and hoop stress
       zz = std::max(zz, std::abs(sig[1] - nu * 2 * A) / p);
     }
     INFO("max error over all particles, in units of p: σ_rr " << rr << ", σ_θθ " << tt << ", σ_zz " << zz);
-    // 2 % of p (the issue's tolerance; σ_θθ spans 0.25p–1.25p here). Measured with
+    // 2 % of p (σ_θθ spans 0.25p–1.25p here): above the largest error measured with
     // 80 cells: linear 0.8–1.5 %, GIMP 1.0–1.7 %, largest in the loaded cell. The load
     // is small (p/E = 1e-4) because it acts on the fixed grid line r = a: once the
     // face moves a sizeable part of a cell off that line (p/E = 1e-3 moves it 6 % of

@@ -50,7 +50,7 @@ TEST_CASE("geostatic K0 column stays at sigma'_v = gamma z, sigma'_h = K0 sigma'
     }
     INFO("after " << s.step << " steps (t = " << s.time_s << " s): max |Δσ_v|, |Δσ_h|, |σ_rz| = " << worst_v << ", "
                   << worst_h << ", " << worst_rz << " Pa against γH = " << gamma * H << " Pa");
-    // The issue asks 1 % of the stress; errors are measured against the largest (γH) so
+    // 1 % of the stress, measured against the largest (γH) so
     // that near-surface particles with tiny stresses do not make the check vacuous.
     // Particles at quadrature-exact positions make the K0 state an exact discrete
     // equilibrium (the hoop term cancels σ_h's radial divergence node by node), so the
