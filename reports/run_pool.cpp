@@ -20,6 +20,7 @@
 
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
+#include "drivers/scene/scene_hash.hpp"
 #include "drivers/scene/scene_reader.hpp"
 #include "reports/slurm_jobs.hpp"
 
@@ -30,14 +31,6 @@ namespace ffp {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull) {
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 std::string read_file(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -65,20 +58,7 @@ std::string slug(const std::string& label) {
   return s.substr(0, 60);
 }
 
-/// Integers as doubles, so that a scene's 2500 and an override's 2500.0 give the same key.
-void normalise_numbers(nlohmann::json& node) {
-  if (node.is_number()) {
-    node = node.get<double>();
-  } else if (node.is_object() || node.is_array()) {
-    for (auto& child : node) normalise_numbers(child);
-  }
-}
-
-std::string hex_key(const std::string& material) {
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(material)));
-  return hex;
-}
+std::string hex_key(const std::string& material) { return hex_digits(fnv1a_64(material)); }
 
 /// The pending runs as one Slurm job array: each task runs one `ffp run` (the command
 /// line on its row of commands.txt) with the threads Slurm gives it, and leaves its
@@ -139,6 +119,18 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
   if (all_ok) fs::remove_all(batch, ignored);  // kept when something failed: its logs say why
 }
 
+/// The next run that ends (waitpid's answer), or 0 once an interrupt is asked for. Polls rather than
+/// blocks: a Ctrl-C landing between a check of the flag and a blocking waitpid would go unseen until
+/// some run ended, minutes later. A poll every 20 ms costs nothing beside the runs.
+pid_t wait_for_a_run(int& status) {
+  while (!interrupt_requested()) {
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+    if (pid != 0) return pid;  // a run ended, or no child is left (-1)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string last_line(const fs::path& log) {
@@ -154,9 +146,9 @@ std::string run_key(const RunRequest& request, const std::string& program_versio
   // file's value (a sweep's reference point) shares the plain run's cache entry.
   nlohmann::json scene = nlohmann::json::parse(read_file(request.scene_file));
   for (const auto& o : request.overrides) apply_override(scene, o);
-  scene.erase("description");  // prose only
-  normalise_numbers(scene);
-  std::string material = scene.dump();
+  // The description left out (prose only) and integers as doubles, so that a scene's 2500 and an
+  // override's 2500.0 give the same key.
+  std::string material = canonical_scene(scene).dump();
   collect_referenced_files(scene, request.scene_file.parent_path(), material);
   material += "\n" + program_version;
   return hex_key(material);
@@ -290,10 +282,20 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     const fs::path log = cache_root / ("." + slug(r.label) + ".log");
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    // Each run in a process group of its own: a terminal's Ctrl-C reaches only this process, which
+    // then stops every run once (stop_running). Were the runs in the terminal's group, each would get
+    // the SIGINT and then that SIGTERM, and a second signal ends a run at once, leaving its
+    // temporary folder behind (interrupt.cpp).
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0);
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), child_environ.data());
+    const int rc = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), child_environ.data());
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) {
       outcomes[i].exit_code = 127;
@@ -331,7 +333,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     while (running.size() < parallel && next < pending.size()) launch(pending[next++]);
     if (running.empty()) continue;
     int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
+    const pid_t pid = wait_for_a_run(status);
     if (interrupt_requested()) {
       stop_running();
       throw_if_interrupted();

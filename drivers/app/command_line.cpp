@@ -60,7 +60,7 @@ void add_sweep(CLI::App& app, SweepOptions& o) {
   CLI::App& sweep = *app.add_subcommand(
       "sweep", "Run every combination of --set key=v1,v2,... as an independent process; DIR/sweep.csv");
   sweep.add_option("SCENE", o.scene_file, "the scene file (JSON)")->required();
-  sweep.add_option("--set", o.axes, "a key and its values, key=v1,v2,... (repeatable)")
+  sweep.add_option("--set", o.axes, "a key and its values, key=v1,v2,... (repeatable, one --set per key)")
       ->type_name("KEY=V1,V2")
       ->required()
       ->allow_extra_args(false);
@@ -72,7 +72,9 @@ void add_sweep(CLI::App& app, SweepOptions& o) {
       ->type_name("DIR");
   sweep.add_option("--jobs", o.jobs, "runs side by side (default 1)")->check(CLI::Range(1, 256));
   sweep.add_option("--threads", o.threads, "OpenMP threads per case (default 1)")->check(CLI::Range(1, 256));
-  sweep.add_flag("--force", o.force, "replace a folder that holds files ffp did not write");
+  sweep.add_flag("--force", o.force,
+                 "use a folder that holds files ffp did not write; with --emit, also discard the finished cases "
+                 "that ran other scenes, so that they run afresh");
   add_scheduler(sweep, o.slurm, "local (default) or slurm: submit the emitted job array with sbatch, wait, collect");
 }
 

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "drivers/app/job.hpp"
 #include "drivers/output/run_directory.hpp"
-#include "reports/run_pool.hpp"
+#include "drivers/scene/scene_hash.hpp"
 #include "reports/slurm_jobs.hpp"
 
 namespace ffp {
@@ -32,20 +33,39 @@ void make_paths_absolute(json& scene, const fs::path& scene_dir) {
   if (scene.contains("path")) fix(scene["path"], "table_csv");
 }
 
-std::string case_id(std::size_t i) {
-  char id[24];
-  std::snprintf(id, sizeof id, "%04zu", i);
-  return id;
+/// Split "a,b,[1,2]" at the commas outside brackets and quotes.
+std::vector<std::string> split_values(const std::string& list) {
+  std::vector<std::string> values;
+  std::string current;
+  int depth = 0;
+  bool in_quotes = false;
+  for (char c : list) {
+    if (c == '"') in_quotes = !in_quotes;
+    if (!in_quotes && (c == '[' || c == '{')) ++depth;
+    if (!in_quotes && (c == ']' || c == '}')) --depth;
+    if (c == ',' && depth == 0 && !in_quotes) {
+      values.push_back(current);
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  values.push_back(current);
+  return values;
 }
 
-std::string csv_cell(const json& v) {
-  if (v.is_number_float()) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v.get<double>());
-    return buffer;
-  }
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
+/// The scene a finished run echoes in its summary.json; null when it has none that can be read.
+json echoed_scene(const fs::path& run) {
+  std::ifstream in(run / "summary.json");
+  if (!in) return nullptr;
+  const json summary = json::parse(in, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object() || !summary.contains("scene")) return nullptr;
+  return summary["scene"];
+}
+
+/// The logs run_case.sh leaves for case `id`.
+std::vector<fs::path> case_logs(const fs::path& dir, const std::string& id) {
+  return {dir / "logs" / ("case_" + id + ".exit"), dir / "logs" / ("case_" + id + ".err")};
 }
 
 void write_script(const fs::path& file, const std::string& text) {
@@ -54,6 +74,33 @@ void write_script(const fs::path& file, const std::string& text) {
 }
 
 }  // namespace
+
+std::string case_id(std::size_t index) {
+  char id[24];
+  std::snprintf(id, sizeof id, "%04zu", index);
+  return id;
+}
+
+std::vector<SweepAxis> sweep_axes(const std::vector<std::string>& arguments) {
+  std::vector<SweepAxis> axes;
+  for (const std::string& assignment : arguments) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key=v1,v2,...");
+    SweepAxis axis{assignment.substr(0, eq), split_values(assignment.substr(eq + 1))};
+    // Applied in turn, a key's second --set would overwrite the first's value in every case while
+    // the table still listed both: each key gets one --set with all its values.
+    for (const SweepAxis& earlier : axes)
+      if (earlier.key == axis.key)
+        throw SceneError("--set " + axis.key + ": given twice; give all its values in one --set " + axis.key +
+                         "=v1,v2,...");
+    for (std::size_t k = 0; k < axis.values.size(); ++k)
+      if (std::find(axis.values.begin(), axis.values.begin() + static_cast<long>(k), axis.values[k]) !=
+          axis.values.begin() + static_cast<long>(k))
+        throw SceneError("--set " + axis.key + ": the value '" + axis.values[k] + "' is given twice");
+    axes.push_back(std::move(axis));
+  }
+  return axes;
+}
 
 std::vector<SweepCase> expand_sweep(const fs::path& scene_file, const std::vector<SweepAxis>& axes,
                                     std::string& scene_name) {
@@ -76,44 +123,55 @@ std::vector<SweepCase> expand_sweep(const fs::path& scene_file, const std::vecto
     one.overrides = c;
     one.scene = base;
     for (const auto& o : c) apply_override(one.scene, o);
-    json echo;
-    make_job(one.scene, scene_dir, echo);  // validates: a typo fails before any run starts
-    scene_name = echo.value("name", "sweep");
+    make_paths_absolute(one.scene, scene_dir);
+    // Validates (a typo fails before any run starts) and resolves the scene as its run will echo it.
+    make_job(one.scene, scene_dir, one.echo);
+    one.scene_hash = scene_hash(one.echo);
+    scene_name = one.echo.value("name", "sweep");
     one.label = scene_name;
     for (const auto& o : c) one.label += "_" + o.substr(o.find('=') + 1);
-    make_paths_absolute(one.scene, scene_dir);
     cases.push_back(std::move(one));
   }
   return cases;
 }
 
-std::string sweep_table(const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
-  std::vector<std::string> figure_columns;
-  std::vector<json> summaries;
-  for (const CaseResult& c : cases) {
-    json s = json::object();
-    if (c.exit_code == 0) {
-      std::ifstream in(c.out_dir / "summary.json");
-      s = json::parse(in);
-      for (const auto& [k, v] : s.items())
-        if ((v.is_number() || v.is_string()) && k != "ffp_version" &&
-            std::find(figure_columns.begin(), figure_columns.end(), k) == figure_columns.end())
-          figure_columns.push_back(k);
-    }
-    summaries.push_back(s);
+EarlierCases find_earlier_cases(const fs::path& dir, const std::vector<SweepCase>& cases) {
+  std::map<std::string, std::string> listed;  // case id → the scene hash the earlier cases.tsv gave it
+  try {
+    for (const CaseRow& row : read_case_list(dir)) listed[row.id] = row.scene_hash;
+  } catch (const SceneError&) {
+    // No earlier list (or one that cannot be read): only the finished runs' own summaries can vouch for them.
   }
-  std::ostringstream table;
-  for (const auto& key : keys) table << key << ",";
-  table << "exit_code,out_dir";
-  for (const auto& c : figure_columns) table << "," << c;
-  table << "\n";
+  EarlierCases earlier;
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    for (const auto& o : cases[i].overrides) table << o.substr(o.find('=') + 1) << ",";
-    table << (cases[i].exit_code >= 0 ? std::to_string(cases[i].exit_code) : "") << "," << cases[i].out_dir.string();
-    for (const auto& c : figure_columns) table << "," << (summaries[i].contains(c) ? csv_cell(summaries[i][c]) : "");
-    table << "\n";
+    const std::string id = case_id(i);
+    const fs::path run = dir / "runs" / ("case_" + id);
+    if (fs::exists(run / kOutputManifest)) {
+      const json ran = echoed_scene(run);
+      if (!ran.is_null() && scene_hash(ran) == cases[i].scene_hash) continue;
+      std::string what = "case " + id;
+      if (ran.is_null()) {
+        what += " has a result whose summary.json names no readable scene";
+      } else {
+        const SceneDifference d = first_difference(ran, cases[i].echo);
+        what += " ran with " + d.key + " = " + d.before + " where this sweep has " + d.after;
+        if (d.others > 0) what += " (and " + std::to_string(d.others) + " more keys)";
+      }
+      earlier.differing_results.push_back(what);
+      earlier.stale.push_back(run);
+    } else if (const auto it = listed.find(id); it != listed.end() && it->second == cases[i].scene_hash) {
+      continue;  // the same scene: its logs (a failure, say) are this case's
+    }
+    earlier.any_scene_changed = true;
+    for (const fs::path& log : case_logs(dir, id))
+      if (fs::exists(log)) earlier.stale.push_back(log);
   }
-  return table.str();
+  return earlier;
+}
+
+void retire_earlier_cases(const fs::path& dir, const EarlierCases& earlier) {
+  for (const fs::path& stale : earlier.stale) fs::remove_all(stale);
+  if (earlier.any_scene_changed) fs::remove(dir / "logs" / "parallel.joblog");
 }
 
 void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, const EmitOptions& options) {
@@ -122,12 +180,12 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
   fs::create_directories(dir / "runs");
   fs::create_directories(dir / "logs");
   std::ostringstream manifest;
-  manifest << "case\toverrides\tscene\tout_dir\n";
+  manifest << kCaseListHeader << "\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string id = case_id(i);
     write_file_atomically(dir / "scenes" / ("case_" + id + ".json"), cases[i].scene.dump(2) + "\n");
     manifest << id << "\t" << json(cases[i].overrides).dump() << "\tscenes/case_" << id << ".json\truns/case_" << id
-             << "\n";
+             << "\t" << cases[i].scene_hash << "\n";
   }
   write_file_atomically(dir / "cases.tsv", manifest.str());
 
@@ -178,44 +236,34 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
                    "}\" --joblog logs/parallel.joblog --resume bash run_case.sh {} ::: $(seq 0 " + last + ")\n");
 }
 
-std::vector<CaseResult> collect_sweep(const fs::path& dir, std::vector<std::string>& keys) {
-  std::ifstream in(dir / "cases.tsv");
+std::vector<CaseRow> read_case_list(const fs::path& dir) {
+  const fs::path file = dir / "cases.tsv";
+  std::ifstream in(file);
   if (!in) throw SceneError(dir.string() + ": no cases.tsv (make one with ffp sweep … --emit " + dir.string() + ")");
   std::string line;
   std::getline(in, line);
-  if (line != "case\toverrides\tscene\tout_dir")
-    throw SceneError((dir / "cases.tsv").string() + ": not a sweep's case list");
-  std::vector<CaseResult> results;
-  keys.clear();
+  const std::string header = kCaseListHeader;
+  const bool hashed = line == header;
+  if (!hashed && line != header.substr(0, header.rfind('\t')))
+    throw SceneError(file.string() + ": not a sweep's case list");
+  const std::size_t columns = hashed ? 5 : 4;
+  std::vector<CaseRow> rows;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     std::vector<std::string> fields;
     std::stringstream row(line);
     for (std::string f; std::getline(row, f, '\t');) fields.push_back(f);
-    if (fields.size() != 4) throw SceneError((dir / "cases.tsv").string() + ": a row without 4 tab-separated fields");
-    CaseResult r;
+    if (fields.size() != columns)
+      throw SceneError(file.string() + ": a row without " + std::to_string(columns) + " tab-separated fields");
+    CaseRow r{fields[0], {}, fields[2], fields[3], hashed ? fields[4] : ""};
     try {
       r.overrides = json::parse(fields[1]).get<std::vector<std::string>>();
     } catch (const std::exception&) {
-      throw SceneError((dir / "cases.tsv").string() + ": case " + fields[0] + ": unreadable overrides");
+      throw SceneError(file.string() + ": case " + fields[0] + ": unreadable overrides");
     }
-    if (keys.empty())
-      for (const auto& o : r.overrides) keys.push_back(o.substr(0, o.find('=')));
-    r.out_dir = dir / fields[3];
-    const fs::path exit_file = dir / "logs" / ("case_" + fields[0] + ".exit");
-    if (fs::exists(r.out_dir / kOutputManifest)) {
-      r.exit_code = 0;
-    } else if (fs::exists(exit_file)) {
-      std::ifstream e(exit_file);
-      int code = -1;
-      e >> code;
-      r.exit_code = code == 0 ? 1 : code;  // 0 without a complete folder is a failure too
-      r.error = last_line(dir / "logs" / ("case_" + fields[0] + ".err"));
-      if (r.error.empty()) r.error = code == 0 ? "exit 0 but no complete output folder" : "no message";
-    }
-    results.push_back(std::move(r));
+    rows.push_back(std::move(r));
   }
-  return results;
+  return rows;
 }
 
 }  // namespace ffp

@@ -10,6 +10,7 @@
 #include "drivers/app/job.hpp"
 #include "drivers/app/program_version.hpp"
 #include "drivers/app/sweep_cases.hpp"
+#include "drivers/app/sweep_results.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "reports/run_pool.hpp"
@@ -21,46 +22,31 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Split "a,b,[1,2]" at the commas outside brackets and quotes.
-std::vector<std::string> split_values(const std::string& list) {
-  std::vector<std::string> values;
-  std::string current;
-  int depth = 0;
-  bool in_quotes = false;
-  for (char c : list) {
-    if (c == '"') in_quotes = !in_quotes;
-    if (!in_quotes && (c == '[' || c == '{')) ++depth;
-    if (!in_quotes && (c == ']' || c == '}')) --depth;
-    if (c == ',' && depth == 0 && !in_quotes) {
-      values.push_back(current);
-      current.clear();
-    } else {
-      current += c;
-    }
-  }
-  values.push_back(current);
-  return values;
-}
-
-/// Writes sweep.csv from the collected cases, lists the missing and failed ones; exit 0 only when all finished.
+/// Writes sweep.csv from the collected cases and lists every missing, failed and unusable one (a finished
+/// run whose summary is missing, corrupt or of another scene); exit 0 only when all finished.
 int report_collected(const fs::path& dir, const std::vector<std::string>& keys, const std::vector<CaseResult>& cases) {
   write_file_atomically(dir / kSweepTable, sweep_table(keys, cases), Durability::synced);
-  std::size_t missing = 0, failed = 0;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
+  std::size_t missing = 0, failed = 0, unusable = 0;
+  for (const CaseResult& c : cases) {
     std::string what;
-    for (const auto& o : cases[i].overrides) what += (what.empty() ? "" : " ") + o;
-    if (cases[i].exit_code < 0) {
+    for (const auto& o : c.overrides) what += (what.empty() ? "" : " ") + o;
+    if (c.exit_code < 0) {
       ++missing;
-      std::fprintf(stderr, "  case %04zu (%s): missing\n", i, what.c_str());
-    } else if (cases[i].exit_code != 0) {
+      std::fprintf(stderr, "  case %s (%s): missing\n", c.id.c_str(), what.c_str());
+    } else if (c.unusable()) {
+      ++unusable;
+      std::fprintf(stderr, "  case %s (%s): unusable: %s\n", c.id.c_str(), what.c_str(), c.error.c_str());
+    } else if (c.exit_code != 0) {
       ++failed;
-      std::fprintf(stderr, "  case %04zu (%s): failed (exit %d): %s\n", i, what.c_str(), cases[i].exit_code,
-                   cases[i].error.c_str());
+      std::fprintf(stderr, "  case %s (%s): failed (exit %d): %s\n", c.id.c_str(), what.c_str(), c.exit_code,
+                   c.error.c_str());
     }
   }
-  std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing\n",
-               (dir / kSweepTable).string().c_str(), cases.size(), cases.size() - missing - failed, failed, missing);
-  return missing == 0 && failed == 0 ? 0 : 1;
+  const std::size_t finished = cases.size() - missing - failed - unusable;
+  std::fprintf(stderr, "wrote %s: %zu cases, %zu finished, %zu failed, %zu missing%s\n",
+               (dir / kSweepTable).string().c_str(), cases.size(), finished, failed, missing,
+               unusable ? (", " + std::to_string(unusable) + " unusable").c_str() : "");
+  return finished == cases.size() ? 0 : 1;
 }
 
 /// Submits DIR/slurm.sbatch, waits until the array has left the queue, then collects.
@@ -82,67 +68,85 @@ int run_on_slurm(const fs::path& dir, std::size_t cases) {
   return report_collected(dir, keys, results);
 }
 
+/// --emit DIR, or --scheduler slurm --out DIR: the case folder and its launch files. A finished case of an
+/// earlier emit into DIR is kept only where its scene is unchanged; where it differs, the emit is refused
+/// (before anything in DIR changes) unless --force asks for those cases to run afresh. Refusing is the
+/// default because the results at stake may be hours of a cluster's time, and another folder keeps them.
+int emit_cases(const fs::path& dir, const std::string& option, const std::vector<SweepCase>& cases,
+               const SweepOptions& options, const std::string& name) {
+  claim_persistent_folder(dir, option, "sweep", options.force);
+  const EarlierCases earlier = find_earlier_cases(dir, cases);
+  const std::size_t differing = earlier.differing_results.size();
+  if (differing > 0 && !options.force)
+    throw SceneError(option + " " + dir.string() + ": " + earlier.differing_results.front() +
+                     (differing > 1 ? " (" + std::to_string(differing) + " finished cases differ)" : "") +
+                     ": choose another folder, or pass --force to discard those results and run them afresh");
+  fs::remove(dir / kSweepTable);
+  retire_earlier_cases(dir, earlier);
+  if (differing > 0)
+    std::fprintf(stderr, "sweep: discarded the results of %zu finished case(s) that ran other scenes\n", differing);
+  EmitOptions emit;
+  emit.ffp_binary = fs::read_symlink("/proc/self/exe");
+  emit.threads_per_case = options.threads;
+  emit.parallel_jobs = std::max(options.jobs, 1);
+  emit.job_name = "ffp-" + name;
+  emit_sweep(dir, cases, emit);
+  std::fprintf(stderr,
+               "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
+               cases.size(), dir.string().c_str(), dir.string().c_str());
+  return options.slurm ? run_on_slurm(dir, cases.size()) : 0;
+}
+
+/// The cases on this machine's process pool, into out/runs (a cache keyed by each scene's content and the
+/// program, run_key: a finished run is reused only for the same scene), then out/sweep.csv.
+int run_here(const fs::path& out, const std::vector<SweepCase>& cases, const std::vector<std::string>& keys,
+             const SweepOptions& options) {
+  claim_persistent_folder(out, "--out", "sweep", options.force);
+  claim_persistent_folder(out / "runs", "--out", "run cache", options.force);
+  // A table from an earlier sweep into this folder must not pass for this one's.
+  fs::remove(out / kSweepTable);
+  std::vector<RunRequest> requests;
+  for (const SweepCase& c : cases) requests.push_back({c.label, options.scene_file, c.overrides});
+  std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), options.jobs, out.string().c_str());
+  const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", program_version(), options.jobs);
+  std::vector<CaseResult> results;
+  int failures = 0;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    CaseResult r;
+    r.overrides = cases[i].overrides;
+    r.out_dir = outcomes[i].out_dir;
+    r.exit_code = outcomes[i].exit_code;
+    r.error = outcomes[i].error;
+    if (r.exit_code == 0) read_case_summary(r);
+    if (!r.finished()) {
+      ++failures;
+      if (r.unusable())
+        std::fprintf(stderr, "  %s unusable: %s\n", requests[i].label.c_str(), r.error.c_str());
+      else
+        std::fprintf(stderr, "  %s failed (exit %d): %s\n", requests[i].label.c_str(), r.exit_code, r.error.c_str());
+    }
+    results.push_back(std::move(r));
+  }
+  write_file_atomically(out / kSweepTable, sweep_table(keys, results), Durability::synced);
+  std::fprintf(stderr, "wrote %s\n", (out / kSweepTable).string().c_str());
+  return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int command_sweep(const SweepOptions& options) {
   try {
-    const std::string& scene_file = options.scene_file;
-    fs::path out = options.out;
-    const fs::path& emit = options.emit;
-    const int jobs = options.jobs, threads = options.threads;
-    const bool force = options.force, slurm = options.slurm;
-    std::vector<SweepAxis> axes;
-    for (const std::string& assignment : options.axes) {
-      const auto eq = assignment.find('=');
-      if (eq == std::string::npos || eq == 0) throw SceneError("--set " + assignment + ": expected key=v1,v2,...");
-      axes.push_back({assignment.substr(0, eq), split_values(assignment.substr(eq + 1))});
-    }
-    if (!emit.empty() && (slurm || !out.empty()))
+    const std::vector<SweepAxis> axes = sweep_axes(options.axes);
+    if (!options.emit.empty() && (options.slurm || !options.out.empty()))
       throw SceneError("--emit: writes the case folder only; give --out with --scheduler slurm to also submit it");
-
     std::string name;
-    const std::vector<SweepCase> cases = expand_sweep(scene_file, axes, name);
+    const std::vector<SweepCase> cases = expand_sweep(options.scene_file, axes, name);
     std::vector<std::string> keys;
     for (const SweepAxis& axis : axes) keys.push_back(axis.key);
-
-    if (!emit.empty() || slurm) {
-      const fs::path dir = !emit.empty() ? emit : (out.empty() ? fs::path("results") / (name + "-sweep") : out);
-      claim_persistent_folder(dir, !emit.empty() ? "--emit" : "--out", "sweep", force);
-      fs::remove(dir / kSweepTable);
-      EmitOptions options;
-      options.ffp_binary = fs::read_symlink("/proc/self/exe");
-      options.threads_per_case = threads;
-      options.parallel_jobs = std::max(jobs, 1);
-      options.job_name = "ffp-" + name;
-      emit_sweep(dir, cases, options);
-      std::fprintf(stderr,
-                   "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
-                   cases.size(), dir.string().c_str(), dir.string().c_str());
-      return slurm ? run_on_slurm(dir, cases.size()) : 0;
-    }
-
-    if (out.empty()) out = fs::path("results") / (name + "-sweep");
-    claim_persistent_folder(out, "--out", "sweep", force);
-    claim_persistent_folder(out / "runs", "--out", "run cache", force);
-    // A table from an earlier sweep into this folder must not pass for this one's.
-    fs::remove(out / kSweepTable);
-    std::vector<RunRequest> requests;
-    for (const SweepCase& c : cases) requests.push_back({c.label, scene_file, c.overrides});
-    std::fprintf(stderr, "sweep: %zu runs, %d at a time, into %s\n", requests.size(), jobs, out.string().c_str());
-    const auto outcomes = run_all("/proc/self/exe", requests, out / "runs", program_version(), jobs);
-    std::vector<CaseResult> results;
-    int failures = 0;
-    for (std::size_t i = 0; i < outcomes.size(); ++i) {
-      results.push_back({cases[i].overrides, outcomes[i].out_dir, outcomes[i].exit_code, outcomes[i].error});
-      if (outcomes[i].exit_code != 0) {
-        ++failures;
-        std::fprintf(stderr, "  %s failed (exit %d): %s\n", requests[i].label.c_str(), outcomes[i].exit_code,
-                     outcomes[i].error.c_str());
-      }
-    }
-    write_file_atomically(out / kSweepTable, sweep_table(keys, results), Durability::synced);
-    std::fprintf(stderr, "wrote %s\n", (out / kSweepTable).string().c_str());
-    return failures == 0 ? 0 : 1;
+    const fs::path out = options.out.empty() ? fs::path("results") / (name + "-sweep") : options.out;
+    if (!options.emit.empty()) return emit_cases(options.emit, "--emit", cases, options, name);
+    if (options.slurm) return emit_cases(out, "--out", cases, options, name);
+    return run_here(out, cases, keys, options);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

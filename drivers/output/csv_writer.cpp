@@ -12,6 +12,16 @@
 
 namespace ffp {
 
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + '"';
+}
+
 CsvTable::CsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {
   if (columns_.empty()) throw std::invalid_argument("CsvTable needs at least one column");
 }
@@ -32,7 +42,7 @@ std::vector<double> CsvTable::column(const std::string& name) const {
 
 std::string CsvTable::to_string() const {
   std::string out;
-  for (std::size_t c = 0; c < columns_.size(); ++c) out += (c ? "," : "") + columns_[c];
+  for (std::size_t c = 0; c < columns_.size(); ++c) out += (c ? "," : "") + csv_field(columns_[c]);
   out += '\n';
   char buffer[32];
   for (std::size_t r = 0; r < rows(); ++r) {

@@ -1,11 +1,18 @@
 #pragma once
-/// Plain CSV tables: a header row, then rows of numbers (%.10g).
+/// Plain CSV tables: a header row, then rows of numbers (%.10g). Every text
+/// field is written by RFC 4180, so any reader of CSV splits it as written.
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ffp {
+
+/// One field as RFC 4180 (section 2, rules 5–7) writes it: enclosed in double
+/// quotes when it holds a comma, a double quote, CR or LF, its double quotes
+/// doubled; otherwise unchanged (numbers never need quotes).
+std::string csv_field(std::string_view text);
 
 class CsvTable {
  public:
