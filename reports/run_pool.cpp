@@ -92,14 +92,24 @@ void run_on_slurm(const fs::path& ffp_binary, const std::vector<RunRequest>& req
   const std::string job = slurm_submit(batch / "batch.sbatch");
   std::fprintf(stderr, "runs: Slurm job %s, %zu array tasks (%s)\n", job.c_str(), pending.size(), batch.c_str());
   std::size_t reported = 0;
-  slurm_wait(job, [&] {
-    throw_if_interrupted();
-    std::size_t done = 0;
-    for (std::size_t t = 0; t < pending.size(); ++t)
-      done += fs::exists(batch / ("task-" + std::to_string(t) + ".exit"));
-    if (done != reported) std::fprintf(stderr, "  %zu of %zu runs done\n", done, pending.size());
-    reported = done;
-  });
+  try {
+    slurm_wait(job, [&] {
+      throw_if_interrupted();
+      std::size_t done = 0;
+      for (std::size_t t = 0; t < pending.size(); ++t)
+        done += fs::exists(batch / ("task-" + std::to_string(t) + ".exit"));
+      if (done != reported) std::fprintf(stderr, "  %zu of %zu runs done\n", done, pending.size());
+      reported = done;
+    });
+  } catch (const Interrupted&) {
+    // Ctrl-C stops these runs as it stops a local pool's: cancelled, waited for (each removes its
+    // temporary folder on Slurm's SIGTERM), and the batch's folder goes with them.
+    std::fprintf(stderr, "runs: cancelling Slurm job %s\n", job.c_str());
+    slurm_cancel(job);
+    std::error_code ignored;
+    fs::remove_all(batch, ignored);
+    throw;
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t t = 0; t < pending.size(); ++t) {
     RunOutcome& o = outcomes[pending[t]];

@@ -51,4 +51,9 @@ void slurm_wait(const std::string& id, const std::function<void()>& poll) {
   }
 }
 
+void slurm_cancel(const std::string& id) {
+  run_program({"scancel", id});
+  slurm_wait(id, [] {});
+}
+
 }  // namespace ffp

@@ -15,6 +15,10 @@ std::string slurm_submit(const std::filesystem::path& sbatch_file);
 /// (progress lines, and a chance to throw on an interrupt).
 void slurm_wait(const std::string& id, const std::function<void()>& poll);
 
+/// scancel ID, then returns once the job has left the queue: Slurm sends its tasks SIGTERM (an ffp run
+/// then removes its temporary folder) and, after the cluster's KillWait, SIGKILL.
+void slurm_cancel(const std::string& id);
+
 /// A value for an `#SBATCH --option=VALUE` line that sbatch reads back exactly: in
 /// double quotes, with `"` and `\` escaped by a backslash (checked against sbatch
 /// 22.05: spaces, quotes, '#', ',', '$', '%' and backslashes all survive). Throws

@@ -55,14 +55,23 @@ int run_on_slurm(const fs::path& dir, std::size_t cases) {
   std::fprintf(stderr, "sweep: Slurm job %s, %zu array tasks; waiting (ffp collect %s gives the table at any time)\n",
                job.c_str(), cases, dir.string().c_str());
   std::size_t last_finished = static_cast<std::size_t>(-1);
-  slurm_wait(job, [&] {
-    throw_if_interrupted();
-    std::vector<std::string> keys;
-    std::size_t finished = 0;
-    for (const CaseResult& c : collect_sweep(dir, keys)) finished += c.exit_code >= 0;
-    if (finished != last_finished) std::fprintf(stderr, "sweep: %zu of %zu cases done\n", finished, cases);
-    last_finished = finished;
-  });
+  try {
+    slurm_wait(job, [&] {
+      throw_if_interrupted();
+      std::vector<std::string> keys;
+      std::size_t finished = 0;
+      for (const CaseResult& c : collect_sweep(dir, keys)) finished += c.exit_code >= 0;
+      if (finished != last_finished) std::fprintf(stderr, "sweep: %zu of %zu cases done\n", finished, cases);
+      last_finished = finished;
+    });
+  } catch (const Interrupted&) {
+    // Ctrl-C stops the runs this command started, as a local sweep's (each removes its temporary
+    // folder on Slurm's SIGTERM); the finished cases stay, and a resubmission runs only the rest.
+    std::fprintf(stderr, "sweep: cancelling Slurm job %s (finished cases stay; sbatch %s runs the rest)\n", job.c_str(),
+                 (dir / "slurm.sbatch").string().c_str());
+    slurm_cancel(job);
+    throw;
+  }
   std::vector<std::string> keys;
   const std::vector<CaseResult> results = collect_sweep(dir, keys);
   return report_collected(dir, keys, results);
