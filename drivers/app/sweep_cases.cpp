@@ -149,15 +149,10 @@ EarlierCases find_earlier_cases(const fs::path& dir, const std::vector<SweepCase
     if (fs::exists(run / kOutputManifest)) {
       const json ran = echoed_scene(run);
       if (!ran.is_null() && scene_hash(ran) == cases[i].scene_hash) continue;
-      std::string what = "case " + id;
-      if (ran.is_null()) {
-        what += " has a result whose summary.json names no readable scene";
-      } else {
-        const SceneDifference d = first_difference(ran, cases[i].echo);
-        what += " ran with " + d.key + " = " + d.before + " where this sweep has " + d.after;
-        if (d.others > 0) what += " (and " + std::to_string(d.others) + " more keys)";
-      }
-      earlier.differing_results.push_back(what);
+      earlier.differing_results.push_back(
+          "case " + id +
+          (ran.is_null() ? " has a result whose summary.json names no readable scene"
+                         : " ran with " + first_difference(ran, cases[i].echo).text("this sweep")));
       earlier.stale.push_back(run);
     } else if (const auto it = listed.find(id); it != listed.end() && it->second == cases[i].scene_hash) {
       continue;  // the same scene: its logs (a failure, say) are this case's

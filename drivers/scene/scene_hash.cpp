@@ -70,4 +70,10 @@ SceneDifference first_difference(const nlohmann::json& before_echo, const nlohma
   return difference;
 }
 
+std::string SceneDifference::text(std::string_view other) const {
+  std::string words = key + " = " + before + " where " + std::string(other) + " has " + after;
+  if (others > 0) words += " (and " + std::to_string(others) + " more keys)";
+  return words;
+}
+
 }  // namespace ffp

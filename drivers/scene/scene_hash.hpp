@@ -42,6 +42,9 @@ struct SceneDifference {
   std::string before;      ///< its value in the first scene as JSON, "none" if absent there
   std::string after;       ///< the same in the second
   std::size_t others = 0;  ///< how many more keys differ
+
+  /// "material.E_kPa = 1000.0 where `other` has 50000.0", with " (and N more keys)" when more differ.
+  std::string text(std::string_view other) const;
 };
 
 /// The keys where `before` and `after` (canonical_scene of each) differ.

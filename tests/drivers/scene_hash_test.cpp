@@ -32,10 +32,12 @@ TEST_CASE("the first difference between two scenes names its key and both values
   CHECK(d.before == "1000.0");
   CHECK(d.after == "50000.0");
   CHECK(d.others == 0);
+  CHECK(d.text("this sweep") == "material.E_kPa = 1000.0 where this sweep has 50000.0");
   wanted["bodies"][0]["m"] = 2;
   wanted["extra"] = true;
   d = ffp::first_difference(ran, wanted);
   CHECK(d.key == "bodies[0].m");
   CHECK(d.others == 2);
+  CHECK(d.text("the case") == "bodies[0].m = 1.0 where the case has 2.0 (and 2 more keys)");
   CHECK(ffp::first_difference(ran, ran).key.empty());
 }
