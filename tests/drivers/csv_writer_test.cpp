@@ -18,7 +18,7 @@ TEST_CASE("a CSV field is quoted when it holds a comma, a double quote, CR or LF
   CHECK(csv_field("time_s") == "time_s");
 }
 
-TEST_CASE("a numeric table keeps its plain header and %.10g numbers; only a header that needs it is quoted",
+TEST_CASE("a numeric table keeps its plain header and %.10g numbers, and only a header that needs it is quoted",
           "[drivers][csv]") {
   CsvTable plain({"time_s", "penetration_m"});
   plain.add_row({0.001, -2.5e-7});
