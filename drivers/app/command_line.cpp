@@ -18,10 +18,11 @@ Examples:
   ffp check SCENE.json                                    validate, print the scene with its defaults
   ffp sweep SCENE.json --set key=v1,v2 [--emit DIR]       every combination, here or for a scheduler
   ffp report [--out DIR]                                  the validation study and its report
+  ffp keys [KIND] [--markdown]                            every scene key: meaning, unit, default, range
 Each command has its own help: ffp run --help.
 
 Scene kinds: point, triaxial, calibration, integration_error, mpm, ffp, cpt, record, inverse
-(see README.md).
+(ffp keys KIND lists a kind's keys).
 Exit codes: 0 done, 1 run failed, 2 bad input, 130 interrupted.)";
 
 /// --scheduler local|slurm, where a command's runs go; `help` says what slurm does for it.
@@ -105,6 +106,14 @@ void add_bench(CLI::App& app, BenchOptions& o) {
   bench.add_option("--scenes", o.scenes, "folder of the scenes (default data/scenes)")->type_name("DIR");
 }
 
+void add_keys(CLI::App& app, KeysOptions& o) {
+  CLI::App& keys = *app.add_subcommand(
+      "keys", "Print every key a scene of each kind accepts: meaning, unit, default, range, and the keys it needs");
+  keys.add_option("KIND", o.kind, "only this kind's keys (default: every kind)");
+  keys.add_flag("--markdown", o.markdown,
+                "Markdown tables, one per kind and per nested object (docs/reference/scenes.md)");
+}
+
 }  // namespace
 
 int run_command_line(int argc, char** argv) {
@@ -117,12 +126,14 @@ int run_command_line(int argc, char** argv) {
   std::filesystem::path collect;
   ReportOptions report;
   BenchOptions bench;
+  KeysOptions keys;
   add_run(app, run);
   add_check(app, check);
   add_sweep(app, sweep);
   add_collect(app, collect);
   add_report(app, report);
   add_bench(app, bench);
+  add_keys(app, keys);
   app.footer(kFooter);  // after the subcommands: they would inherit it
 
   if (argc < 2) {
@@ -156,6 +167,7 @@ int run_command_line(int argc, char** argv) {
   if (app.got_subcommand("sweep")) return command_sweep(sweep);
   if (app.got_subcommand("collect")) return command_collect(collect);
   if (app.got_subcommand("report")) return command_report(report);
+  if (app.got_subcommand("keys")) return command_keys(keys);
   return command_bench(bench);
 }
 

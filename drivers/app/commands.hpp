@@ -41,12 +41,18 @@ struct BenchOptions {
   std::filesystem::path scenes;  ///< empty: data/scenes here, else the source tree's
 };
 
+struct KeysOptions {
+  std::string kind;  ///< "" for every kind
+  bool markdown = false;
+};
+
 int command_run(const RunOptions& options);
 int command_check(const RunOptions& options);
 int command_sweep(const SweepOptions& options);
 int command_collect(const std::filesystem::path& folder);
 int command_report(const ReportOptions& options);
 int command_bench(const BenchOptions& options);
+int command_keys(const KeysOptions& options);
 
 /// Parse the command line (CLI11) and run the subcommand it names.
 int run_command_line(int argc, char** argv);

@@ -2,10 +2,9 @@
 /// with the rigid penetrometer pushed at a prescribed constant velocity, for
 /// the quasi-static reaction profile F_0(z).
 ///
-/// Keys as for `ffp` (ffp_job.cpp), except:
-///   ffp        {push_velocity_m_s (+ down), cone_apex_angle_deg, base_radius_m, edge_radius_m,
-///               body_length_m} — no mass, impact velocity, deformable body or rigid-body force
-///   end_depth_m (end_time_s = end_depth_m / push_velocity_m_s) or end_time_s
+/// Its keys are the ffp kind's (ffp_scene.cpp), with a push speed instead of a
+/// mass, an impact velocity, a deformable body or a rigid-body force, and an
+/// end_depth_m or end_time_s: `ffp keys cpt`.
 /// The paper pushes at v_ref = 2 cm/s. A rate-independent sand's F_0 does not
 /// depend on the push speed while inertia is negligible (ρ v² A ≪ F_0), so a
 /// scene may push faster to keep the run short; it states the speed it uses
@@ -20,7 +19,7 @@
 namespace ffp {
 
 std::unique_ptr<Job> make_cpt_job(SceneReader& scene, const std::filesystem::path&) {
-  std::string name = scene.text("name", "cpt");
+  std::string name = read_scene_name(scene, "cpt");
   return make_penetrometer_job(read_ffp_scene(scene, PenetrometerKind::cpt), std::move(name));
 }
 

@@ -2,29 +2,8 @@
 /// sections 4–5), axisymmetric MPM with a rigid (section 4.1) or linear
 /// elastic (section 5.1) penetrometer, frictional contact and a moving mesh.
 ///
-/// Scene keys (geotechnical units where the key says so; z up, sand surface z = 0):
-///   end_time_s, gravity_m_s2 (9.81)
-///   material   {model mohr_coulomb | ssmc | linear_elastic, E_kPa, nu, phi_peak_deg, …, density_kg_m3}
-///   soil       {depth_m 0.4, radius_m 0.4, k0 (Jaky 1 − sin φ'_p), particles_per_cell_near [3,3] (per
-///               min_cell², same spacing in larger cells), particles_per_cell_far [2,2] (per cell),
-///               near_radius_m 0.15, near_depth_m (depth_m)}
-///   ffp        {mass_kg, impact_velocity_m_s (+ down), cone_apex_angle_deg 60, base_radius_m 0.04375,
-///               edge_radius_m 0.005, body_length_m 0.5,
-///               rigid: rigid_body_force contact_impulse | soil_internal_force, external_force_N (+ up);
-///               elastic: deformable {E_kPa, nu, particles_per_cell [2,2]}}
-///   contact    {delta_deg | rough: true, velocity_scaling 0.75 (a cap on a correction's strain per step,
-///               Bardenhagen 2001 as the paper's code applies it), detection_cells 0.5 (nodes this many
-///               min cells outside the outline also touch: the contact surface centred on the outline),
-///               surface nodes | particles (rigid: each sand particle's domain against the exact outline)}
-///   mesh       {min_cell_m 0.01, max_cell_m 3·min, below_cell_m 2·min, min_compressed_cell_m min,
-///               fine_radius_m 0.15, band_below_m 0.05, fine_above_m 0.3, air_above_m 0.1, growth 1.2}
-///   solver     {shape_function gimp | linear, transfer usl | musl | musl_remapped, flip_fraction 0.99,
-///               pic_blend per_soil_step | per_step | per_second (the PIC share 1 − flip_fraction per soil
-///               CFL step at Courant 0.5, scaled by Δt/Δt_soil; or per step whatever Δt; or per the 1 cm
-///               mesh's soil step on every mesh: mpm/ffp_model.hpp),
-///               courant 0.5, strain_smoothing volumetric, subcycle off | auto | on (a deformable FFP's own
-///               substeps inside the soil's step: mpm/body_subcycle.hpp)}
-///   output     {history_interval_s 2e-4, field_times_s [0.04, 0.06, end], strain_colour_max 0.5}
+/// Its keys are read in ffp_scene.cpp, each declared where it is read: `ffp keys ffp`
+/// (docs/reference/scenes.md). z points up, with the sand surface at z = 0.
 /// Writes history.csv (time_s, penetration_m (+ down), velocity_m_s (+ down), deceleration_g
 /// ((R − Mg)/Mg, + when slowing a downward motion), reaction_N (soil on FFP, + up), contact_nodes,
 /// soil_kinetic_energy_J, dt_s, impulse_N_s, soil_intrusion_m). reaction_N on a row is the mean over
@@ -334,7 +313,7 @@ std::unique_ptr<Job> make_penetrometer_job(FfpScene scene, std::string name) {
 }
 
 std::unique_ptr<Job> make_ffp_job(SceneReader& scene, const fs::path&) {
-  std::string name = scene.text("name", "ffp");
+  std::string name = read_scene_name(scene, "ffp");
   return make_penetrometer_job(read_ffp_scene(scene, PenetrometerKind::ffp), std::move(name));
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// Reading the `ffp` and `cpt` scene kinds (shared keys) into the FFP model
-/// description (mpm/ffp_model.hpp) and the run's output settings. The keys are
-/// listed in ffp_job.cpp (ffp) and cpt_job.cpp (cpt).
+/// description (mpm/ffp_model.hpp) and the run's output settings. Each key is
+/// declared where it is read: `ffp keys ffp`, `ffp keys cpt`.
 #include <memory>
 #include <optional>
 #include <string>

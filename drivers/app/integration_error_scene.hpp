@@ -3,10 +3,9 @@
 /// integration is against its run time (drivers/integration_study.hpp).
 /// Reading only; integration_error_job runs it.
 ///
-/// Scene: material (an ssmc material with a constant ψ_p; the Mohr-Coulomb
-/// runs use its peak φ', ψ, c'), cell_pressure_kPa, axial_strain_max, strain_rate_per_s,
-/// increments [list], reference_increments, min_timing_s, and maps
-/// {points_x, points_y, max_trial_over_yield_strain, reference_substeps}.
+/// Its keys, each declared where integration_error_scene.cpp reads it:
+/// `ffp keys integration_error` (docs/reference/scenes.md). The material is an
+/// ssmc one with a constant ψ_p: the Mohr-Coulomb runs use its peak φ', ψ, c'.
 #include "drivers/integration_study.hpp"
 #include "drivers/scene/scene_reader.hpp"
 #include "models/strain_softening_mohr_coulomb.hpp"

@@ -1,6 +1,6 @@
 /// The `inverse` scene kind: soil (and contact) parameters of an `ffp` scene
 /// fitted by Ceres so that the MPM's deceleration against depth matches a
-/// record (drivers/app/inverse_scene.hpp for the keys). Every model point is an
+/// record (its keys: `ffp keys inverse`). Every model point is an
 /// independent `ffp run` process with its own folder under runs/ (a
 /// forward-difference Jacobian's p + 1 runs side by side, --jobs N, or as a
 /// Slurm job array with --scheduler slurm); model and record go through the
@@ -252,7 +252,7 @@ void InverseJob::run(RunContext& context) {
 }  // namespace
 
 std::unique_ptr<Job> make_inverse_job(SceneReader& scene, const fs::path& scene_dir) {
-  std::string name = scene.text("name", "inverse");
+  std::string name = read_scene_name(scene, "inverse");
   InverseScene inverse = read_inverse_scene(scene, scene_dir);
   scene.finish("an inverse scene");
   std::optional<InterpretedRecord> record;

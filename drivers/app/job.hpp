@@ -62,6 +62,13 @@ struct KindEntry {
 /// Every kind this build can run.
 const std::vector<KindEntry>& registered_kinds();
 
+/// The kinds' names, each between `open` and `close`, comma separated.
+std::string kind_list(std::string_view open, std::string_view close);
+
+/// The scene's `name` (the kind when absent): make_job reads it, and a kind's reader
+/// that needs its value reads it again through this, with the same Doc.
+std::string read_scene_name(SceneReader& scene, std::string_view kind);
+
 /// Validate a scene (overrides already applied): returns the job and fills `echo`;
 /// `log`, when given, collects every key the kind's readers know.
 std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo,

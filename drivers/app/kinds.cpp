@@ -23,32 +23,42 @@ const std::vector<KindEntry>& registered_kinds() {
   return kinds;
 }
 
+std::string kind_list(std::string_view open, std::string_view close) {
+  std::string out;
+  for (const auto& k : registered_kinds())
+    out += (out.empty() ? "" : ", ") + std::string(open) + std::string(k.kind) + std::string(close);
+  return out;
+}
+
+std::string read_scene_name(SceneReader& scene, std::string_view kind) {
+  return scene.text("name", kind,
+                    Doc("names the output folder `results/<name>/`: 1–100 letters, digits, `_`, `-`, `.`, the first a "
+                        "letter or digit"));
+}
+
 std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo, KeyLog* log) {
   echo = json::object();
   SceneReader top(scene, "", echo, log);
   std::vector<std::string> names;
   for (const auto& k : registered_kinds()) names.emplace_back(k.kind);
   const json* kind_value = scene.contains("kind") ? &scene.at("kind") : nullptr;
-  if (kind_value == nullptr) {
-    std::string allowed;
-    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-    top.fail("kind", "is required (one of: " + allowed + ")");
-  }
+  if (kind_value == nullptr) top.fail("kind", "is required (one of: " + kind_list("", "") + ")");
   const std::string kind = kind_value->is_string() ? kind_value->get<std::string>() : "";
   const auto entry = std::find_if(registered_kinds().begin(), registered_kinds().end(),
                                   [&](const KindEntry& k) { return k.kind == kind; });
   if (entry == registered_kinds().end()) {
-    std::string allowed;
-    for (const auto& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    const std::string allowed = kind_list("", "");
     const std::string guess = kind.empty() ? "" : nearest(kind, names);
     top.fail("kind", (kind_value->is_string() ? "'" + kind + "' is not a kind this build runs"
                                               : std::string("must be a string")) +
                          ": must be one of: " + allowed + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
   }
-  top.allow("kind");
+  top.allow("kind", Doc("what the scene runs: it decides which other keys the scene may hold")
+                        .by_default("required")
+                        .within(kind_list("`", "`")));
   echo["kind"] = kind;
-  top.text("name", kind);
-  top.allow("description");
+  read_scene_name(top, kind);
+  top.allow("description", Doc("free text, copied to summary.json unchanged").within("text"));
   if (scene.contains("description")) echo["description"] = scene.at("description");
   return entry->make(top, scene_dir);
 }

@@ -1,20 +1,7 @@
 /// The `mpm` scene kind: a generic axisymmetric MPM run for verification
 /// scenes (wave column, geostatic column, colliding bodies, …).
 ///
-/// Scene keys (SI unless the key says otherwise):
-///   mesh        {r_nodes_m | r_min_m (0), r_max_m, cell_r_m;  z_nodes_m | z_min_m (0), z_max_m, cell_z_m}
-///   gravity_m_s2          magnitude along −z; omitted: no gravity stage
-///   bodies[]    {name, material (material_scene.hpp, density_kg_m3 required),
-///                region {r_min_m, r_max_m, z_min_m, z_max_m} | {sphere_center_z_m, sphere_radius_m},
-///                particles_per_cell [n_r, n_z], initial_velocity_m_s [v_r, v_z],
-///                initial_stress {k0 (default Jaky / ν/(1−ν)), surface_z_m}}
-///   boundaries  {axis (or inner when r_min > 0), outer, bottom, top}: free | roller | fixed | absorbing
-///   surface_pressures[]   {side: inner|outer, pressure_kPa, ramp_time_s, z_min_m, z_max_m}
-///   solver      {shape_function: gimp|linear, transfer: musl|usl, flip_fraction, courant,
-///                dt_s (fixed; refused above the CFL limit), strain_smoothing, local_damping}
-///   end_time_s
-///   output      {history_interval_s, history [quantities], field_times_s | field_interval_s,
-///                probes [{name, r_m, z_m}]}
+/// Its keys are read in mpm_scene.cpp, each declared where it is read: `ffp keys mpm`.
 /// Writes history.csv, fields/particles_NNNN.vtu + fields/particles.pvd, plots/energy.png.
 #include <cmath>
 #include <cstdio>
@@ -216,7 +203,7 @@ void MpmJob::run(RunContext& context) {
 }  // namespace
 
 std::unique_ptr<Job> make_mpm_job(SceneReader& scene, const fs::path&) {
-  const std::string name = scene.text("name", "mpm");
+  const std::string name = read_scene_name(scene, "mpm");
   MpmScene parsed = read_mpm_scene(scene);
   std::unique_ptr<MpmJob> job = build_mpm_model("mpm", [&] {
     const mpm::ModelSize size = mpm::estimate_model_size(parsed.model, memory_budget_bytes());

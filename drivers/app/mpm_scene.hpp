@@ -1,6 +1,6 @@
 #pragma once
 /// Reading an `mpm` verification scene into the MPM model description and the
-/// run's output settings (see mpm_job.cpp for the keys).
+/// run's output settings. Each key is declared where it is read: `ffp keys mpm`.
 #include <string>
 #include <vector>
 
@@ -30,6 +30,13 @@ struct MpmScene {
 
 /// Reads every key of the scene after kind/name and finish()es it. SceneError on bad input.
 MpmScene read_mpm_scene(SceneReader& scene);
+
+/// The solver keys the mpm and ffp/cpt scenes share, each read (and documented) here once.
+mpm::ShapeFunction read_shape_function(SceneReader& solver);
+mpm::Transfer read_transfer(SceneReader& solver, mpm::Transfer fallback);
+double read_flip_fraction(SceneReader& solver);
+double read_courant(SceneReader& solver);
+double read_local_damping(SceneReader& solver);
 
 /// solver.strain_smoothing (mpm and ffp/cpt scenes): a mode name (off, volumetric, full),
 /// or true/false as before the modes (true: volumetric, false: off).

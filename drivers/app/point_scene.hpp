@@ -2,16 +2,8 @@
 /// Reading the `point` scene kind: one material point along a stress/strain
 /// path (point_job.cpp runs it).
 ///
-/// Scene (geotechnical units: kPa, compression positive for stress and strain):
-///   material            see drivers/scene/material_scene.hpp (density not used)
-///   initial_stress_kPa  [σ11, σ22, σ33, σ12, σ23, σ13], or initial_pressure_kPa
-///                       (default: the path's confining stress, else 0)
-///   initial_state       the law's internal variables, e.g. {plastic_deviatoric_strain,
-///                       strain_rate_per_s} (read_initial_state in material_scene.hpp)
-///   path.type           isotropic | oedometric | triaxial_compression |
-///                       triaxial_extension | simple_shear | general
-///   newton              {max_iterations, relative_tolerance}
-///   output_every_increments
+/// Its keys, each declared where point_scene.cpp reads it: `ffp keys point`
+/// (docs/reference/scenes.md). Stresses in kPa and strains are compression positive.
 /// Axial is component 22 (z in axisymmetry); shear strains are tensor
 /// components ε_ij except simple_shear's shear_strain_max (engineering γ).
 #include <array>

@@ -1,15 +1,6 @@
 /// The `record` scene kind: a measured FFP drop interpreted (drivers/ffp_record.hpp).
 ///
-/// Scene keys (drivers/app/record_scene.hpp; the README's "record" table):
-///   record_csv           time_s and deceleration_g (net, + slowing) or acceleration_m_s2 (sensor, sky +),
-///                        optionally pore_pressure_kPa; relative to the scene file
-///   sensor_range_g | sensor_range_m_s2   the channel's full scale (saturation test)
-///   ffp                  {mass_kg, tip cone | flat, cone_apex_angle_deg 60, base_radius_m 0.04375, volume_m3 (water)}
-///   impact_velocity_m_s  (+ down; absent: integrated from rest at the first sample)
-///   impact_time_s | impact_threshold_g 1
-///   medium air | water, fluid_density_kg_m3 (1.2 | 1020), drag_coefficient 0, gravity_m_s2 9.81
-///   rate_laws            {reference_velocity_m_s 0.02, q_sbc_area projected | mantle, log {K 0.1},
-///                         brilli {K 0.31}, asinh {K 0.1}} (absent: all three at their defaults)
+/// Its keys are read in record_scene.cpp, each declared where it is read: `ffp keys record`.
 /// Refuses records no penetrometer impact can produce and flags unlikely ones
 /// (drivers/record_plausibility.hpp): each doubt goes to stderr and, only when
 /// there is one, to the summary's `warnings`.
@@ -76,7 +67,7 @@ class RecordJob : public Job {
 }  // namespace
 
 std::unique_ptr<Job> make_record_job(SceneReader& scene, const fs::path& scene_dir) {
-  std::string name = scene.text("name", "record");
+  std::string name = read_scene_name(scene, "record");
   RecordScene record = read_record_scene(scene, scene_dir);
   scene.finish("a record scene");
   RecordSamples samples = load_record(record);

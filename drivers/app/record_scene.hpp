@@ -18,10 +18,7 @@ struct RecordScene {
   std::optional<double> sensor_range;  ///< full scale, in the channel's unit
 };
 
-/// Reads record_csv, sensor_range_g | sensor_range_m_s2, ffp {mass_kg, tip,
-/// cone_apex_angle_deg, base_radius_m, volume_m3}, impact_velocity_m_s,
-/// impact_time_s, impact_threshold_g, gravity_m_s2, medium, fluid_density_kg_m3,
-/// drag_coefficient and rate_laws {reference_velocity_m_s, q_sbc_area, log, brilli, asinh}.
+/// Reads the record's keys (`ffp keys record`, each declared where it is read).
 /// Does not finish() the reader.
 RecordScene read_record_scene(SceneReader& scene, const std::filesystem::path& scene_dir);
 

@@ -2,15 +2,8 @@
 /// Reading the `triaxial` scene kind: the drained triaxial element test on the
 /// paper's weightless specimen (drivers/triaxial_test.hpp; triaxial_job.cpp runs it).
 ///
-/// Scene (geotechnical units, compression positive):
-///   material             see drivers/scene/material_scene.hpp (no density: weightless)
-///   cell_pressure_kPa    σ3 (default 1.72, the paper's)
-///   axial_strain_max     default 0.2
-///   increments           equal axial-strain increments (default 2000)
-///   strain_rate_per_s    only the rate law sees it (default 1e-4, quasi-static)
-///   specimen             {height_m: 0.15, diameter_m: 0.07}
-///   newton               {max_iterations, relative_tolerance}
-///   output_every_increments  rows of history.csv (the work integral uses every increment)
+/// Its keys, each declared where triaxial_scene.cpp reads it: `ffp keys triaxial`
+/// (docs/reference/scenes.md).
 #include <string>
 
 #include "drivers/scene/material_scene.hpp"

@@ -14,19 +14,29 @@ constexpr double kMaxCohesion_kPa = 1e6;
 
 ElasticConstants read_elastic(SceneReader& m) {
   ElasticConstants e;
-  e.youngs_modulus_Pa = 1e3 * m.number("E_kPa", Range::positive(kMaxModulus_kPa, "kPa"));
-  e.poisson_ratio = m.number("nu", Range::half_open(0.0, 0.5));
+  e.youngs_modulus_Pa = 1e3 * m.number("E_kPa", Range::positive(kMaxModulus_kPa, "kPa"), Doc("Young's modulus E'"));
+  e.poisson_ratio = m.number("nu", Range::half_open(0.0, 0.5), Doc("Poisson's ratio ν'"));
   return e;
+}
+
+/// ψ of mohr_coulomb, ψ_p of ssmc without Bolton's dilatancy.
+double read_peak_dilatancy_deg(SceneReader& m, double phi_deg) {
+  return m.number("psi_peak_deg", Range::closed(0.0, phi_deg, "degrees", "0 ≤ ψ ≤ φ"), 0.0,
+                  Doc("dilatancy angle ψ (ssmc: its peak ψ_p)")
+                      .within("[0, phi_peak_deg]")
+                      .only_with("model = mohr_coulomb, or ssmc without relative_density"));
 }
 
 }  // namespace
 
 MaterialSpec read_material(SceneReader& m, DensityRule density) {
   MaterialSpec spec;
-  spec.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "ssmc"});
+  spec.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "ssmc"},
+                        Doc("the constitutive law: each accepts only its own keys"));
   const ElasticConstants elastic = read_elastic(m);
   if (density == DensityRule::required)
-    spec.density_kg_m3 = m.number("density_kg_m3", Range::positive(kMaxDensity, "kg/m³"));
+    spec.density_kg_m3 =
+        m.number("density_kg_m3", Range::positive(kMaxDensity, "kg/m³"), Doc("density ρ (unit weight γ = ρ g)"));
 
   if (spec.model == "linear_elastic") {
     spec.parameters = elastic;
@@ -34,8 +44,14 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
     return spec;
   }
 
-  const double phi_deg = m.number("phi_peak_deg", Range::half_open(0.0, 90.0, "degrees"));
-  const double cohesion_kPa = m.number("c_peak_kPa", Range::non_negative(kMaxCohesion_kPa, "kPa"), 0.0);
+  const std::string plastic = "model = mohr_coulomb or ssmc";
+  const double phi_deg = m.number("phi_peak_deg", Range::half_open(0.0, 90.0, "degrees"),
+                                  Doc("friction angle φ' (ssmc: its peak φ'_p)")
+                                      .within("(0, 90); 0 (Tresca) for mohr_coulomb with c_peak_kPa > 0")
+                                      .only_with(plastic));
+  const double cohesion_kPa =
+      m.number("c_peak_kPa", Range::non_negative(kMaxCohesion_kPa, "kPa"), 0.0,
+               Doc("cohesion c' (ssmc: its peak c'_p; with φ' = 0 the undrained strength s_u)").only_with(plastic));
   // φ' = 0 is Tresca, a clay's undrained strength c' = s_u: only with a cohesion, and only for MC
   // (SSMC softens φ' towards φ'_r > 0).
   if (phi_deg == 0.0 && (spec.model != "mohr_coulomb" || cohesion_kPa == 0.0))
@@ -47,45 +63,66 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
     MohrCoulombParameters p;
     p.elastic = elastic;
     p.friction_angle_rad = phi_deg * kDegree;
-    p.dilatancy_angle_rad = m.number("psi_peak_deg", Range::closed(0.0, phi_deg, "degrees (0 ≤ ψ ≤ φ)"), 0.0) * kDegree;
+    p.dilatancy_angle_rad = read_peak_dilatancy_deg(m, phi_deg) * kDegree;
     p.cohesion_Pa = 1e3 * cohesion_kPa;
     spec.parameters = p;
     m.finish("a mohr_coulomb material");
     return spec;
   }
 
+  const std::string ssmc = "model = ssmc";
   StrainSofteningParameters p;
   p.elastic = elastic;
   p.friction_peak_rad = phi_deg * kDegree;
   p.friction_residual_rad =
-      m.number("phi_residual_deg", Range::closed(0.0, phi_deg, "degrees (0 < φ_r ≤ φ_p)")) * kDegree;
+      m.number("phi_residual_deg", Range::closed(0.0, phi_deg, "degrees", "0 < φ_r ≤ φ_p"),
+               Doc("residual (critical-state) friction angle φ'_r").within("(0, phi_peak_deg]").only_with(ssmc)) *
+      kDegree;
   if (p.friction_residual_rad <= 0.0) m.fail("phi_residual_deg", "must be > 0 degrees");
   p.cohesion_peak_Pa = 1e3 * cohesion_kPa;
-  p.cohesion_residual_Pa =
-      1e3 * m.number("c_residual_kPa", Range::closed(0.0, cohesion_kPa, "kPa (0 ≤ c_r ≤ c_p)"), 0.0);
-  p.softening_factor = m.number("eta", Range::positive(1e4));
-  if (m.has("relative_density")) {
-    if (m.has("psi_peak_deg"))
-      m.fail("psi_peak_deg", "give either psi_peak_deg or relative_density (Bolton dilatancy), not both");
-    p.relative_density = m.number("relative_density", Range::closed(0.0, 1.0));
-  } else {
-    p.dilatancy_peak_rad = m.number("psi_peak_deg", Range::closed(0.0, phi_deg, "degrees (0 ≤ ψ ≤ φ)"), 0.0) * kDegree;
-  }
+  p.cohesion_residual_Pa = 1e3 * m.number("c_residual_kPa", Range::closed(0.0, cohesion_kPa, "kPa", "0 ≤ c_r ≤ c_p"),
+                                          0.0, Doc("residual cohesion c'_r").within("[0, c_peak_kPa]").only_with(ssmc));
+  p.softening_factor = m.number("eta", Range::positive(1e4),
+                                Doc("softening factor η: φ', c' and ψ fall from peak to residual as exp(−η ε_d^p) "
+                                    "([theory](../theory.md#strain-softening-mohr-coulomb))")
+                                    .only_with(ssmc));
+  if (m.has("relative_density") && m.has("psi_peak_deg"))
+    m.fail("psi_peak_deg", "give either psi_peak_deg or relative_density (Bolton dilatancy), not both");
+  p.relative_density = m.optional_number(
+      "relative_density", Range::closed(0.0, 1.0),
+      Doc("relative density D_r as a fraction: Bolton's transient dilatancy, which replaces psi_peak_deg "
+          "([theory](../theory.md#bolton-dilatancy))")
+          .by_default("none: a constant ψ_p")
+          .only_with(ssmc));
+  if (!p.relative_density) p.dilatancy_peak_rad = read_peak_dilatancy_deg(m, phi_deg) * kDegree;
   const double psi_peak_deg = p.dilatancy_peak_rad / kDegree;
   p.dilatancy_residual_rad =
-      m.number("psi_residual_deg", Range::closed(0.0, p.relative_density ? phi_deg : psi_peak_deg, "degrees"), 0.0) *
+      m.number("psi_residual_deg", Range::closed(0.0, p.relative_density ? phi_deg : psi_peak_deg, "degrees"), 0.0,
+               Doc("residual dilatancy angle ψ_r")
+                   .within("[0, psi_peak_deg]; with relative_density [0, phi_peak_deg]")
+                   .only_with(ssmc)) *
       kDegree;
+  const Doc rate_doc = Doc("a rate-dependent peak friction angle φ'_p(ε̇) ([theory](../theory.md#rate-dependence))")
+                           .by_default("none: rate independent")
+                           .within("object")
+                           .only_with(ssmc);
   if (m.has("rate_dependence")) {
-    SceneReader r = m.object("rate_dependence");
-    p.rate.alpha_phi = r.number("alpha_phi", Range::closed(0.0, 10.0));
-    p.rate.reference_strain_rate_per_s = r.number("reference_strain_rate_per_s", Range::positive(1e6, "1/s"));
-    p.rate.smoothing_increments = r.integer("smoothing_increments", 1, 10000, 1);
+    SceneReader r = m.object("rate_dependence", rate_doc);
+    p.rate.alpha_phi = r.number("alpha_phi", Range::closed(0.0, 10.0),
+                                Doc("α_φ: φ'_p grows by the factor 1 + α_φ log10(ε̇/ε̇_ref) above ε̇_ref"));
+    p.rate.reference_strain_rate_per_s = r.number("reference_strain_rate_per_s", Range::positive(1e6, "1/s"),
+                                                  Doc("ε̇_ref, below which φ'_p is the rate-independent one"));
+    p.rate.smoothing_increments = r.integer("smoothing_increments", 1, 10000, 1,
+                                            Doc("the span of the moving average of ε̇, in increments (1: none)"));
     p.rate.max_friction_angle_rad =
-        r.number("max_phi_deg", Range::closed(phi_deg, 89.0, "degrees (≥ phi_peak_deg)"), std::max(70.0, phi_deg)) *
+        r.number("max_phi_deg", Range::closed(phi_deg, 89.0, "degrees", "≥ phi_peak_deg"), std::max(70.0, phi_deg),
+                 Doc("upper limit of the rate-raised φ'_p")
+                     .by_default("max(70, phi_peak_deg)")
+                     .within("[phi_peak_deg, 89]")) *
         kDegree;
     r.finish("rate_dependence");
   } else {
-    m.allow("rate_dependence");
+    m.allow("rate_dependence", rate_doc);
   }
   spec.parameters = p;
   m.finish("an ssmc material");
@@ -128,9 +165,14 @@ MaterialState read_initial_state(SceneReader& scene, const MaterialLaw& law) {
   auto* softening = std::get_if<StrainSofteningMohrCoulomb::State>(&state);
   if (softening == nullptr)
     scene.fail("initial_state", "only an ssmc material has a state (plastic_deviatoric_strain, strain_rate_per_s)");
-  SceneReader s = scene.object("initial_state");
-  softening->plastic_deviatoric_strain = s.number("plastic_deviatoric_strain", Range::non_negative(1e6), 0.0);
-  softening->strain_rate_per_s = s.number("strain_rate_per_s", Range::non_negative(1e12, "1/s"), 0.0);
+  SceneReader s = scene.object("initial_state", Doc("the law's internal variables at the start")
+                                                    .by_default("none: the virgin state")
+                                                    .within("object")
+                                                    .only_with("material.model = ssmc"));
+  softening->plastic_deviatoric_strain = s.number("plastic_deviatoric_strain", Range::non_negative(1e6), 0.0,
+                                                  Doc("the accumulated plastic deviatoric strain ε_d^p"));
+  softening->strain_rate_per_s = s.number("strain_rate_per_s", Range::non_negative(1e12, "1/s"), 0.0,
+                                          Doc("the smoothed deviatoric strain rate ε̇ of the rate law"));
   s.finish("initial_state");
   return state;
 }

@@ -1,13 +1,9 @@
 #pragma once
 /// The `material` object of a scene, read into one of the laws' parameter sets.
 ///
-/// Keys (geotechnical units): model ∈ {linear_elastic, mohr_coulomb, ssmc},
-/// E_kPa, nu, density_kg_m3 (only where the kind has inertia or gravity),
-/// phi_peak_deg, psi_peak_deg, c_peak_kPa (MC and SSMC), and for SSMC
-/// phi_residual_deg, psi_residual_deg, c_residual_kPa, eta, relative_density
-/// (Bolton transient dilatancy instead of psi_peak_deg) and an optional
-/// rate_dependence {alpha_phi, reference_strain_rate_per_s, smoothing_increments}.
-/// Each model accepts only its own keys.
+/// Each model accepts only its own keys, and each key is declared where it is
+/// read (`ffp keys KIND` lists them under `material`). Geotechnical units:
+/// kPa and degrees.
 ///
 /// This file and models/ are the only places that know which laws there are:
 /// the scene keys of each law's parameters and of its state (a point scene's
@@ -34,6 +30,9 @@ struct MaterialSpec {
   double at_rest_k0() const { return ffp::at_rest_k0(parameters); }
   double peak_cohesion_Pa() const { return ffp::peak_cohesion_Pa(parameters); }
 };
+
+/// MaterialSpec::at_rest_k0 in words, for the scene reference.
+inline constexpr std::string_view kAtRestK0Words = "Jaky's 1 − sin φ'_p (linear_elastic: ν/(1 − ν))";
 
 enum class DensityRule { not_used, required };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -54,7 +55,61 @@ std::string Range::describe() const {
   }
   if (out.empty()) out = "a finite number";
   if (!unit.empty()) out += " " + std::string(unit);
+  if (!note.empty()) out += " (" + std::string(note) + ")";
   return out;
+}
+
+std::string Range::interval() const {
+  const bool low = min > -std::numeric_limits<double>::max();
+  const bool high = max < std::numeric_limits<double>::max();
+  std::string out;
+  if (low && high) {
+    out = std::string(min_open ? "(" : "[") + compact_number(min) + ", " + compact_number(max) + (max_open ? ")" : "]");
+  } else if (low) {
+    out = (min_open ? "> " : "≥ ") + compact_number(min);
+  } else if (high) {
+    out = (max_open ? "< " : "≤ ") + compact_number(max);
+  } else {
+    out = "any number";
+  }
+  if (!note.empty()) out += " (" + std::string(note) + ")";
+  return out;
+}
+
+std::string compact_number(double v) {
+  // Powers of ten and their multiples from 1e4 on as a reader writes them (1e4, 3e4, 1e9);
+  // other numbers with %g's six digits (1488.28, 0.04375, 1e-10).
+  const double magnitude = std::abs(v);
+  if (magnitude >= 1e4 && magnitude < 1e300) {
+    const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    const double mantissa = v / std::pow(10.0, exponent);
+    if (std::abs(mantissa - std::round(mantissa)) < 1e-12)
+      return std::to_string(static_cast<long>(std::round(mantissa))) + "e" + std::to_string(exponent);
+  }
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  std::string out = buffer;
+  const auto e = out.find('e');  // 1e-05 → 1e-5
+  if (e == std::string::npos) return out;
+  std::string mantissa = out.substr(0, e), exponent = out.substr(e + 1);
+  const bool negative = exponent[0] == '-';
+  exponent = exponent.substr(1);
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return mantissa + "e" + (negative ? "-" : "") + exponent;
+}
+
+void KeyLog::note(const std::string& path, KeyEntry entry) {
+  const auto [at, added] = entries.try_emplace(path, entry);
+  if (added) {
+    order.push_back(path);
+  } else if (!(at->second == entry)) {
+    conflicts.push_back(path);
+  }
+}
+
+void KeyLog::drop(const std::string& path) {
+  entries.erase(path);
+  order.erase(std::remove(order.begin(), order.end(), path), order.end());
 }
 
 SceneReader::SceneReader(const json& object, std::string path, json& echo, KeyLog* log)
@@ -76,18 +131,29 @@ void SceneReader::fail(std::string_view key, const std::string& message) const {
 
 bool SceneReader::has(std::string_view key) const { return object_->contains(std::string(key)); }
 
+void SceneReader::know(std::string_view key) {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+}
+
 const json* SceneReader::find(std::string_view key) {
-  allow(key);
+  know(key);
   auto it = object_->find(std::string(key));
   return it == object_->end() ? nullptr : &*it;
 }
 
-void SceneReader::allow(std::string_view key) {
-  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
-  if (log_ != nullptr) log_->paths.insert(child_path(key));
+void SceneReader::document(std::string_view key, const Doc& doc, std::string allowed, std::string_view unit,
+                           std::string fallback) {
+  if (log_ == nullptr) return;
+  log_->note(child_path(key), KeyEntry{doc.meaning, std::string(unit), doc.fallback.empty() ? fallback : doc.fallback,
+                                       doc.range.empty() ? allowed : doc.range, doc.condition});
 }
 
-std::optional<double> SceneReader::optional_number(std::string_view key, const Range& range) {
+void SceneReader::allow(std::string_view key, const Doc& doc) {
+  know(key);
+  document(key, doc, "", "", "none");
+}
+
+std::optional<double> SceneReader::read_number(std::string_view key, const Range& range) {
   const json* v = find(key);
   if (v == nullptr) return std::nullopt;
   if (!v->is_number()) fail(key, "must be a number (" + range.describe() + "), got " + type_name(*v));
@@ -98,20 +164,27 @@ std::optional<double> SceneReader::optional_number(std::string_view key, const R
   return x;
 }
 
-double SceneReader::number(std::string_view key, const Range& range) {
-  auto v = optional_number(key, range);
+std::optional<double> SceneReader::optional_number(std::string_view key, const Range& range, const Doc& doc) {
+  document(key, doc, range.interval(), range.unit, "none");
+  return read_number(key, range);
+}
+
+double SceneReader::number(std::string_view key, const Range& range, const Doc& doc) {
+  document(key, doc, range.interval(), range.unit, "required");
+  auto v = read_number(key, range);
   if (!v) fail(key, "is required (" + range.describe() + ")");
   return *v;
 }
 
-double SceneReader::number(std::string_view key, const Range& range, double fallback) {
-  auto v = optional_number(key, range);
+double SceneReader::number(std::string_view key, const Range& range, double fallback, const Doc& doc) {
+  document(key, doc, range.interval(), range.unit, compact_number(fallback));
+  auto v = read_number(key, range);
   if (v) return *v;
   (*echo_)[std::string(key)] = fallback;
   return fallback;
 }
 
-int SceneReader::integer(std::string_view key, long min, long max) {
+int SceneReader::read_integer(std::string_view key, long min, long max) {
   const json* v = find(key);
   const std::string allowed = "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   if (v == nullptr) fail(key, "is required (" + allowed + ")");
@@ -124,16 +197,32 @@ int SceneReader::integer(std::string_view key, long min, long max) {
   return static_cast<int>(x);
 }
 
-int SceneReader::integer(std::string_view key, long min, long max, long fallback) {
+namespace {
+
+std::string integer_interval(long min, long max) {
+  return "integer in [" + compact_number(static_cast<double>(min)) + ", " + compact_number(static_cast<double>(max)) +
+         "]";
+}
+
+}  // namespace
+
+int SceneReader::integer(std::string_view key, long min, long max, const Doc& doc) {
+  document(key, doc, integer_interval(min, max), "", "required");
+  return read_integer(key, min, max);
+}
+
+int SceneReader::integer(std::string_view key, long min, long max, long fallback, const Doc& doc) {
+  document(key, doc, integer_interval(min, max), "", compact_number(static_cast<double>(fallback)));
   if (!has(key)) {
-    allow(key);
+    know(key);
     (*echo_)[std::string(key)] = fallback;
     return static_cast<int>(fallback);
   }
-  return integer(key, min, max);
+  return read_integer(key, min, max);
 }
 
-bool SceneReader::boolean(std::string_view key, bool fallback) {
+bool SceneReader::boolean(std::string_view key, bool fallback, const Doc& doc) {
+  document(key, doc, "`true`, `false`", "", fallback ? "`true`" : "`false`");
   const json* v = find(key);
   if (v == nullptr) {
     (*echo_)[std::string(key)] = fallback;
@@ -144,7 +233,7 @@ bool SceneReader::boolean(std::string_view key, bool fallback) {
   return v->get<bool>();
 }
 
-std::string SceneReader::text(std::string_view key) {
+std::string SceneReader::read_text(std::string_view key) {
   const json* v = find(key);
   if (v == nullptr) fail(key, "is required (a string)");
   if (!v->is_string()) fail(key, "must be a string, got " + type_name(*v));
@@ -152,19 +241,37 @@ std::string SceneReader::text(std::string_view key) {
   return v->get<std::string>();
 }
 
-std::string SceneReader::text(std::string_view key, std::string_view fallback) {
+std::string SceneReader::text(std::string_view key, const Doc& doc) {
+  document(key, doc, "text", "", "required");
+  return read_text(key);
+}
+
+std::string SceneReader::text(std::string_view key, std::string_view fallback, const Doc& doc) {
+  document(key, doc, "text", "", "`" + std::string(fallback) + "`");
   if (!has(key)) {
-    allow(key);
+    know(key);
     (*echo_)[std::string(key)] = std::string(fallback);
     return std::string(fallback);
   }
-  return text(key);
+  return read_text(key);
 }
 
+namespace {
+
+std::string names_in_backticks(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "`" : ", `") + n + "`";
+  return out;
+}
+
+}  // namespace
+
 std::size_t SceneReader::choose(std::string_view key, const std::vector<std::string>& options,
-                                const std::string_view* fallback) {
+                                const std::string_view* fallback, const Doc& doc) {
+  document(key, doc, names_in_backticks(options), "",
+           fallback == nullptr ? "required" : "`" + std::string(*fallback) + "`");
   if (fallback != nullptr && !has(key)) {
-    allow(key);
+    know(key);
     (*echo_)[std::string(key)] = std::string(*fallback);
     return static_cast<std::size_t>(std::find(options.begin(), options.end(), *fallback) - options.begin());
   }
@@ -182,37 +289,49 @@ std::size_t SceneReader::choose(std::string_view key, const std::vector<std::str
   return static_cast<std::size_t>(match - options.begin());
 }
 
-std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed) {
+std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed, const Doc& doc) {
   const std::vector<std::string> options(allowed.begin(), allowed.end());
-  return options[choose(key, options, nullptr)];
+  return options[choose(key, options, nullptr, doc)];
 }
 
 std::string SceneReader::choice(std::string_view key, std::initializer_list<std::string_view> allowed,
-                                std::string_view fallback) {
+                                std::string_view fallback, const Doc& doc) {
+  const std::vector<std::string> options(allowed.begin(), allowed.end());
   // The fallback need not be one of `allowed` (it never was checked): it is returned as given.
   if (!has(key)) {
-    allow(key);
+    document(key, doc, names_in_backticks(options), "", "`" + std::string(fallback) + "`");
+    know(key);
     (*echo_)[std::string(key)] = std::string(fallback);
     return std::string(fallback);
   }
-  return choice(key, allowed);
+  return options[choose(key, options, &fallback, doc)];
 }
 
-std::filesystem::path SceneReader::file(std::string_view key, const std::filesystem::path& scene_dir) {
-  const std::filesystem::path named = text(key);
+std::filesystem::path SceneReader::file(std::string_view key, const std::filesystem::path& scene_dir, const Doc& doc) {
+  document(key, doc, "a file (relative to the scene's folder)", "", "required");
+  const std::filesystem::path named = read_text(key);
   return (named.is_absolute() ? named : scene_dir / named).lexically_normal();
 }
 
-std::filesystem::path SceneReader::existing_file(std::string_view key, const std::filesystem::path& scene_dir) {
-  std::filesystem::path resolved = file(key, scene_dir);
+std::filesystem::path SceneReader::existing_file(std::string_view key, const std::filesystem::path& scene_dir,
+                                                 const Doc& doc) {
+  std::filesystem::path resolved = file(key, scene_dir, doc);
   std::error_code error;
   if (!std::filesystem::is_regular_file(resolved, error))
     fail(key, "'" + resolved.string() + "' is not a file (paths are relative to the scene's folder)");
   return resolved;
 }
 
-std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_view key, const Range& range,
-                                                                 std::size_t min_size, std::size_t max_size) {
+namespace {
+
+std::string list_shape(std::size_t min_size, std::size_t max_size, const std::string& what) {
+  return std::to_string(min_size) + (min_size == max_size ? "" : " to " + std::to_string(max_size)) + " " + what;
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> SceneReader::read_numbers(std::string_view key, const Range& range,
+                                                             std::size_t min_size, std::size_t max_size) {
   const json* v = find(key);
   if (v == nullptr) return std::nullopt;
   const std::string shape = "a list of " + std::to_string(min_size) +
@@ -235,14 +354,22 @@ std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_vie
   return out;
 }
 
+std::optional<std::vector<double>> SceneReader::optional_numbers(std::string_view key, const Range& range,
+                                                                 std::size_t min_size, std::size_t max_size,
+                                                                 const Doc& doc) {
+  document(key, doc, list_shape(min_size, max_size, "numbers, each " + range.interval()), range.unit, "none");
+  return read_numbers(key, range, min_size, max_size);
+}
+
 std::vector<double> SceneReader::numbers(std::string_view key, const Range& range, std::size_t min_size,
-                                         std::size_t max_size) {
-  auto v = optional_numbers(key, range, min_size, max_size);
+                                         std::size_t max_size, const Doc& doc) {
+  document(key, doc, list_shape(min_size, max_size, "numbers, each " + range.interval()), range.unit, "required");
+  auto v = read_numbers(key, range, min_size, max_size);
   if (!v) fail(key, "is required (a list of numbers, each " + range.describe() + ")");
   return *v;
 }
 
-SceneReader SceneReader::object(std::string_view key, bool required) {
+SceneReader SceneReader::nested(std::string_view key, bool required) {
   static const json empty = json::object();
   const json* v = find(key);
   if (v == nullptr && required) fail(key, "is required (an object)");
@@ -252,7 +379,19 @@ SceneReader SceneReader::object(std::string_view key, bool required) {
   return SceneReader(v != nullptr ? *v : empty, child_path(key), child_echo, log_);
 }
 
-std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t min_size, std::size_t max_size) {
+SceneReader SceneReader::object(std::string_view key, const Doc& doc) {
+  document(key, doc, "object", "", "{}");
+  return nested(key, false);
+}
+
+SceneReader SceneReader::required_object(std::string_view key, const Doc& doc) {
+  document(key, doc, "object", "", "required");
+  return nested(key, true);
+}
+
+std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t min_size, std::size_t max_size,
+                                              const Doc& doc) {
+  document(key, doc, list_shape(min_size, max_size, "objects"), "", min_size > 0 ? "required" : "[]");
   const json* v = find(key);
   std::vector<SceneReader> out;
   const std::string shape = "a list of " + std::to_string(min_size) + " to " + std::to_string(max_size) + " objects";
@@ -272,11 +411,17 @@ std::vector<SceneReader> SceneReader::objects(std::string_view key, std::size_t 
   return out;
 }
 
-std::optional<json> SceneReader::raw(std::string_view key) {
+std::optional<json> SceneReader::raw(std::string_view key, const Doc& doc) {
+  document(key, doc, "JSON", "", "none");
   const json* v = find(key);
   if (v == nullptr) return std::nullopt;
   (*echo_)[std::string(key)] = *v;
   return *v;
+}
+
+void SceneReader::refuse(std::string_view key, const std::string& reason) {
+  if (has(key)) fail(key, reason);
+  if (log_ != nullptr) log_->drop(child_path(key));
 }
 
 void SceneReader::finish(std::string_view context) {

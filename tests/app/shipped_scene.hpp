@@ -21,9 +21,9 @@ class ShippedScene {
       : scene_(load_scene_file((kSceneDir / (name + ".json")).string())) {
     for (const std::string& o : overrides) apply_override(scene_, o);
     top_.emplace(scene_, "", echo_);
-    top_->allow("kind");
-    top_->text("name", "");
-    top_->allow("description");
+    top_->allow("kind", Doc("the scene kind"));
+    top_->text("name", "", Doc("the scene name"));
+    top_->allow("description", Doc("free text"));
   }
   ShippedScene(const ShippedScene&) = delete;
   ShippedScene& operator=(const ShippedScene&) = delete;

@@ -17,7 +17,7 @@ using namespace ffp;
 /// What make_job does before the kind's reader: the top-level reader, kind already read.
 PointScene read(const json& scene, json& echo) {
   SceneReader top(scene, "", echo);
-  top.allow("kind");
+  top.allow("kind", Doc("the scene kind"));
   return read_point_scene(top, std::filesystem::path(FFP_SOURCE_DIR) / "data" / "scenes");
 }
 

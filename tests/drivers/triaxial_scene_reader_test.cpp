@@ -15,7 +15,7 @@ using namespace ffp;
 
 TriaxialScene read(const json& scene, json& echo) {
   SceneReader top(scene, "", echo);
-  top.allow("kind");
+  top.allow("kind", Doc("the scene kind"));
   return read_triaxial_scene(top);
 }
 
