@@ -39,9 +39,11 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   d.soil.walls = soil.choice("walls", mpm::kChamberWallsNames, mpm::ChamberWalls::rigid,
                              Doc("the chamber's base and wall: rigid (base fixed, wall on rollers: the paper's) or "
                                  "absorbing (viscous-spring dashpots: the waves leave as into more sand) "
-                                 "([theory](../theory.md#absorbing-boundaries))"));
+                                 "([theory](../theory.md#absorbing-walls), "
+                                 "[verification](../verification.md#chamber-echo))"));
   d.soil.k0 = soil.number("k0", Range::closed(0.0, 10.0), spec.at_rest_k0(),
-                          Doc("K0 of the geostatic start, σ'_h = K0 σ'_v").by_default(std::string(kAtRestK0Words)));
+                          Doc("K0 of the geostatic start, σ'_h = K0 σ'_v ([theory](../theory.md#k0))")
+                              .by_default(std::string(kAtRestK0Words)));
   if (soil.has("near_spacing_m")) {
     // A spacing in metres, the same at every mesh size; checked against mesh.min_cell_m in read_mesh.
     if (soil.has("particles_per_cell_near"))
@@ -69,7 +71,7 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
       soil.number("disconnected_density_ratio", Range::half_open(0.0, 1.0), 0.5,
                   Doc("a particle whose density falls below this fraction of its initial one has lost grain contact: "
                       "no stress, its volume held (Dunatunga & Kamrin 2015; 0: off) "
-                      "([theory](../theory.md#disconnected-particles))"));
+                      "([theory](../theory.md#disconnection))"));
   soil.finish(
       "soil (depth_m, radius_m, walls, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, "
       "near_radius_m, near_depth_m, disconnected_density_ratio)");
@@ -122,7 +124,8 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
     for (const char* key : {"rigid_body_force", "external_force_N"})
       if (f.has(key)) f.fail(key, "applies to a rigid penetrometer only (this one is deformable)");
     SceneReader e = f.object("deformable", Doc("a linear elastic penetrometer instead of the rigid body; its density "
-                                               "is mass_kg over its volume")
+                                               "is mass_kg over its volume "
+                                               "([theory](../theory.md#deformable-penetrometer))")
                                                .by_default("none: rigid")
                                                .within("object"));
     mpm::DeformableFfp body;
@@ -140,7 +143,8 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
     const std::string rigid = "no deformable";
     d.force = f.choice("rigid_body_force", mpm::kRigidBodyForceNames, mpm::RigidBodyForce::contact_impulse,
                        Doc("the soil's reaction on the rigid body: the impulse exchanged at the contact, or the "
-                           "paper's eq. 1 as printed (the soil's internal force)")
+                           "paper's eq. 1 as printed (the soil's internal force) "
+                           "([theory](../theory.md#rigid-body))")
                            .only_with(rigid));
     d.external_force_N = f.number("external_force_N", Range::closed(-1e9, 1e9, "N", "+ up"), 0.0,
                                   Doc("an extra vertical force on the rigid body").only_with(rigid));
@@ -169,7 +173,7 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   d.surface = c.choice("surface", mpm::kContactSurfaceNames, mpm::ContactSurface::nodes,
                        Doc("where the contact acts: the nodes near the outline, or each sand particle's domain "
                            "against the exact outline (a rigid body only) "
-                           "([verification](../verification.md#contact-surface))"));
+                           "([theory](../theory.md#contact-surface))"));
   if (d.surface == mpm::ContactSurface::particles) {
     if (d.deformable) c.fail("surface", "particles applies to a rigid penetrometer only (this one is deformable)");
     if (d.force != mpm::RigidBodyForce::contact_impulse)
@@ -182,13 +186,14 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
     d.contact.velocity_scaling =
         c.number("velocity_scaling", Range::closed(0.0, 10.0, "", "strain per step; 0: no cap"), 0.75,
                  Doc("a cap on a contact correction's strain in one step, |Δv|Δt/h (Bardenhagen et al. 2001 as the "
-                     "paper's code applies it) ([theory](../theory.md#contact))")
+                     "paper's code applies it) ([theory](../theory.md#velocity-scaling))")
                      .only_with("surface = nodes"));
     // Nodes up to half a cell outside the outline take part: the contact surface is then centred on the
     // outline at every h (with 0, only nodes inside: the cone is 0.38 h thinner and soil intrudes 0.75 h).
     d.detection_cells = c.number("detection_cells", Range::closed(0.0, 3.0, "cells"), 0.5,
                                  Doc("nodes up to this many min cells outside the outline are contact nodes: 0.5 "
-                                     "centres the contact surface on the outline")
+                                     "centres the contact surface on the outline "
+                                     "([theory](../theory.md#detection-cells))")
                                      .only_with("surface = nodes"));
   }
   // Soil particles that end up inside the rigid body's exact outline are put back onto it
@@ -198,7 +203,7 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
   d.project_particles =
       c.boolean("project_particles", !d.deformable,
                 Doc("after each step, sand particles inside the exact outline are put back onto it (positions only) "
-                    "([verification](../verification.md#particle-projection))")
+                    "([theory](../theory.md#particle-projection))")
                     .by_default("`true` for a rigid penetrometer; `false` (and refused) with ffp.deformable"));
   if (d.project_particles && d.deformable)
     c.fail("project_particles", "applies to a rigid penetrometer only (this one is deformable)");
@@ -206,11 +211,14 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
 }
 
 void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
-  SceneReader m = scene.object("mesh", Doc("the grid: fine cells around the tip in a band that moves with it"));
+  SceneReader m = scene.object("mesh", Doc("the grid: fine cells around the tip in a band that moves with it "
+                                           "([theory](../theory.md#moving-mesh))"));
   mpm::FfpMesh& mesh = d.mesh;
-  mesh.min_cell_m = m.number("min_cell_m", Range::positive(1.0, "m"), 0.01,
-                             Doc("fine cells around and below the tip; every other size defaults to a multiple of it")
-                                 .within("(0, 1]; ffp.base_radius_m + min_cell_m ≤ soil.radius_m"));
+  mesh.min_cell_m =
+      m.number("min_cell_m", Range::positive(1.0, "m"), 0.01,
+               Doc("fine cells around and below the tip; every other size defaults to a multiple of it (the paper's "
+                   "sand does not converge with it: [verification](../verification.md#mesh-convergence))")
+                   .within("(0, 1]; ffp.base_radius_m + min_cell_m ≤ soil.radius_m"));
   const double h = mesh.min_cell_m;
   // Sizes default to multiples of min_cell_m, so that --set mesh.min_cell_m=… refines everything.
   mesh.max_cell_m = m.number("max_cell_m", Range::closed(h, 10.0, "m", "≥ min_cell_m"), 3.0 * h,
@@ -223,7 +231,7 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
       m.number("min_compressed_cell_m", Range::closed(0.0, mesh.below_cell_m, "m", "≤ below_cell_m; 0: no limit"), h,
                Doc("the compressing zone's cells shrink to this height, then the band stops and the penetrometer "
                    "goes on through its cells (0: no limit, the paper's moving mesh) "
-                   "([verification](../verification.md#compressed-cell-limit))")
+                   "([theory](../theory.md#min-compressed-cell))")
                    .by_default("min_cell_m")
                    .within("[0, below_cell_m]"));
   mesh.fine_radius_m =
@@ -244,11 +252,11 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
   mesh.tip_offset_cells = m.number("tip_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0,
                                    Doc("the band's node rows sit this many cells above the tip (0: the tip on a node "
                                        "row): the grid's phase against the cone "
-                                       "([verification](../verification.md#grid-phase))"));
+                                       "([theory](../theory.md#grid-phase))"));
   mesh.edge_offset_cells = m.number("edge_offset_cells", Range{0.0, 1.0, false, true, "cells"}, 0.0,
                                     Doc("R lies this many cells past the last node column inside it (0: a column on "
                                         "R; 0.5: R midway between two, as the punch benchmarks) "
-                                        "([verification](../verification.md#punch-benchmark))"));
+                                        "([verification](../verification.md#punch))"));
   if (d.soil.near_spacing_m && *d.soil.near_spacing_m > h)
     scene.fail("soil.near_spacing_m",
                "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
@@ -290,7 +298,7 @@ void read_solver(SceneReader& scene, mpm::FfpDescription& d, PenetrometerKind ki
       d.subcycle = solver.choice("subcycle", mpm::kSubcycleNames, mpm::Subcycle::off,
                                  Doc("a deformable penetrometer's own CFL substeps inside the soil's step: off, on, "
                                      "or auto (when the soil's step is at least 4 times the body's) "
-                                     "([verification](../verification.md#body-subcycling))")
+                                     "([verification](../verification.md#subcycling))")
                                      .only_with("ffp.deformable"));
     } else if (solver.has("subcycle")) {
       solver.fail("subcycle", "applies to a deformable penetrometer (ffp.deformable) only");
@@ -337,7 +345,7 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
     if (auto window = scene.optional_numbers(
             "plateau_settlement_ratio", Range::open(0.0, 1.0, "", "settlement / base_radius_m"), 2, 2,
             Doc("the settlement window [from, to], as fractions of ffp.base_radius_m, over which bearing_factor is "
-                "the mean pressure over c' ([verification](../verification.md#punch-benchmark))")
+                "the mean pressure over c' ([verification](../verification.md#punch))")
                 .by_default("[0.04, 0.06]")
                 .within("2 numbers in (0, 1), from < to, to × ffp.base_radius_m within the push")
                 .only_with("ffp.tip = flat and material.c_peak_kPa > 0"))) {

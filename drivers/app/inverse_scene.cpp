@@ -80,7 +80,8 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
   for (const char* key : kInverseKeys) fittable += (fittable.empty() ? "`" : ", `") + std::string(key) + "`";
   std::vector<SceneReader> parameters = scene.objects(
       "parameters", 1, 6,
-      Doc("the fitted parameters; the forward scene is checked at their initial values and at their bounds"));
+      Doc("the fitted parameters; the forward scene is checked at their initial values and at their bounds "
+          "([theory](../theory.md#inverse))"));
   for (std::size_t k = 0; k < parameters.size(); ++k) {
     SceneReader& p = parameters[k];
     FitParameter q;

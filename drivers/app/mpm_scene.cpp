@@ -68,7 +68,7 @@ mpm::Fixity read_fixity(SceneReader& b, const std::string& key, mpm::Fixity fall
   const std::string side = key == "inner" ? "the inner side" : key == "outer" ? "the outer side" : "the " + key;
   return b.choice(key, mpm::kFixityNames, fallback,
                   Doc(side + "; absorbing: dashpots with the first body's impedance "
-                             "([theory](../theory.md#absorbing-boundaries))")
+                             "([theory](../theory.md#absorbing-walls))")
                       .only_with(key == "inner" ? "mesh from r > 0" : ""));
 }
 
@@ -142,7 +142,7 @@ mpm::Transfer read_transfer(SceneReader& solver, mpm::Transfer fallback) {
   return solver.choice("transfer", mpm::kTransferNames, fallback,
                        Doc("the particle update: usl (positions and strains from the grid update), musl (Sulsky et al. "
                            "1995: strains from the remapped velocities) or musl_remapped (the paper's code: both from "
-                           "them) ([verification](../verification.md#transfer-schemes))"));
+                           "them) ([verification](../verification.md#transfer))"));
 }
 
 double read_flip_fraction(SceneReader& solver) {

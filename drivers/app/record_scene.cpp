@@ -92,7 +92,7 @@ RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
   }
 
   const Doc laws_doc = Doc("the rate laws f_SR that turn q_dyn into q_sbc = q_dyn / f_SR; only the laws named are "
-                           "computed ([theory](../theory.md#record-interpretation))")
+                           "computed ([theory](../theory.md#record-laws))")
                            .by_default("all three at their K")
                            .within("object");
   if (!scene.has("rate_laws")) {

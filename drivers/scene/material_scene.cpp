@@ -84,14 +84,14 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
                                           0.0, Doc("residual cohesion c'_r").within("[0, c_peak_kPa]").only_with(ssmc));
   p.softening_factor = m.number("eta", Range::positive(1e4),
                                 Doc("softening factor η: φ', c' and ψ fall from peak to residual as exp(−η ε_d^p) "
-                                    "([theory](../theory.md#strain-softening-mohr-coulomb))")
+                                    "([theory](../theory.md#ssmc))")
                                     .only_with(ssmc));
   if (m.has("relative_density") && m.has("psi_peak_deg"))
     m.fail("psi_peak_deg", "give either psi_peak_deg or relative_density (Bolton dilatancy), not both");
   p.relative_density = m.optional_number(
       "relative_density", Range::closed(0.0, 1.0),
       Doc("relative density D_r as a fraction: Bolton's transient dilatancy, which replaces psi_peak_deg "
-          "([theory](../theory.md#bolton-dilatancy))")
+          "([theory](../theory.md#bolton))")
           .by_default("none: a constant ψ_p")
           .only_with(ssmc));
   if (!p.relative_density) p.dilatancy_peak_rad = read_peak_dilatancy_deg(m, phi_deg) * kDegree;
@@ -102,7 +102,7 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
                    .within("[0, psi_peak_deg]; with relative_density [0, phi_peak_deg]")
                    .only_with(ssmc)) *
       kDegree;
-  const Doc rate_doc = Doc("a rate-dependent peak friction angle φ'_p(ε̇) ([theory](../theory.md#rate-dependence))")
+  const Doc rate_doc = Doc("a rate-dependent peak friction angle φ'_p(ε̇) ([theory](../theory.md#rate-law))")
                            .by_default("none: rate independent")
                            .within("object")
                            .only_with(ssmc);

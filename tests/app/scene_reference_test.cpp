@@ -125,6 +125,52 @@ TEST_CASE("defaults and bounds that depend on other keys are given in words", "[
   CHECK(entry("mpm", "solver.transfer").fallback == "`musl`");
 }
 
+TEST_CASE("the reference's links to the manual land on anchors that exist", "[app][scene][keys]") {
+  static const std::regex link("\\]\\(\\.\\./([a-z_]+\\.md)#([A-Za-z0-9_-]+)\\)");
+  std::set<std::pair<std::string, std::string>> targets;
+  for (const KindReference& kind : reference())
+    for (const ReferenceKey& key : kind.keys)
+      for (auto it = std::sregex_iterator(key.entry.meaning.begin(), key.entry.meaning.end(), link);
+           it != std::sregex_iterator(); ++it)
+        targets.insert({(*it)[1].str(), (*it)[2].str()});
+  CHECK(targets.size() >= 10);
+  for (const auto& [file, id] : targets) {
+    INFO("docs/" << file << "#" << id);
+    std::ifstream in(fs::path(FFP_SOURCE_DIR) / "docs" / file);
+    REQUIRE(in);
+    std::stringstream text;
+    text << in.rdbuf();
+    CHECK(text.str().find("<a id=\"" + id + "\">") != std::string::npos);
+  }
+}
+
+TEST_CASE("a read logs its key with the Doc's words and its own facts, and a second read must agree",
+          "[app][scene][keys]") {
+  const json scene = {{"depth_m", 0.3}};
+  json echo;
+  KeyLog log;
+  SceneReader reader(scene, "soil", echo, &log);
+  const Doc depth = Doc("depth of the sand");
+  CHECK(reader.number("depth_m", Range::positive(100.0, "m"), 0.4, depth) == 0.3);
+  CHECK(reader.number("near_depth_m", Range::closed(0.0, 0.3, "m", "≤ depth_m"), 0.3,
+                      Doc("depth of the near zone").by_default("depth_m").within("[0, depth_m]")) == 0.3);
+  const KeyEntry& entry = log.entries.at("soil.depth_m");
+  CHECK(entry.meaning == "depth of the sand");
+  CHECK(entry.unit == "m");
+  CHECK(entry.fallback == "0.4");
+  CHECK(entry.allowed == "(0, 100]");
+  CHECK(log.entries.at("soil.near_depth_m").fallback == "depth_m");
+  CHECK(log.entries.at("soil.near_depth_m").allowed == "[0, depth_m]");
+  CHECK(log.order == std::vector<std::string>{"soil.depth_m", "soil.near_depth_m"});
+  // The same read again agrees; another meaning for the same key is a conflict.
+  reader.number("depth_m", Range::positive(100.0, "m"), 0.4, depth);
+  CHECK(log.conflicts.empty());
+  reader.number("depth_m", Range::positive(100.0, "m"), 0.4, Doc("the chamber's depth"));
+  CHECK(log.conflicts == std::vector<std::string>{"soil.depth_m"});
+  // The echo is the scene as read, whatever the log says.
+  CHECK(echo == json{{"depth_m", 0.3}, {"near_depth_m", 0.3}});
+}
+
 TEST_CASE("a number in the reference reads as a person writes it", "[app][scene][keys]") {
   CHECK(compact_number(1e9) == "1e9");
   CHECK(compact_number(30000) == "3e4");
