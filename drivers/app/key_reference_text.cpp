@@ -140,7 +140,7 @@ std::string reference_text(const std::vector<KindReference>& kinds) {
           if (!value.empty()) facts += (facts.empty() ? "" : "; ") + plain(value);
         };
         add(e.unit);
-        add(e.fallback == "required" ? e.fallback : "default " + e.fallback);
+        add(e.fallback.rfind("required", 0) == 0 ? e.fallback : "default " + e.fallback);
         add(e.allowed);
         add(e.condition.empty() ? "" : "only with " + e.condition);
         out << "  " << key->path << "\n      " << plain(e.meaning) << "\n      " << facts << "\n";

@@ -1,7 +1,9 @@
 /// `ffp keys [KIND] [--markdown]`: the scene reference, built from the readers over the probe
 /// scenes (key_reference.hpp), on standard output.
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "drivers/app/commands.hpp"
@@ -26,7 +28,7 @@ int command_keys(const KeysOptions& options) {
     return 1;
   }
   if (!std::cout) {
-    std::fprintf(stderr, "ffp keys: cannot write to standard output\n");
+    std::fprintf(stderr, "ffp keys: cannot write to standard output: %s\n", std::strerror(errno));
     return 1;
   }
   return 0;
