@@ -1,0 +1,215 @@
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "models/elastic.hpp"
+#include "models/localisation.hpp"
+#include "models/math_constants.hpp"
+#include "models/principal_stress.hpp"
+#include "tensor_test_helpers.hpp"
+
+using namespace ffp;
+using namespace ffp::test;
+
+namespace {
+
+constexpr double kShearModulus = 1e6;  // Pa; r and the angles are scale-free
+
+ElasticConstants elastic_with(double nu) { return {2.0 * kShearModulus * (1.0 + nu), nu}; }
+
+/// A stress with principal values s1 ≥ s3 in the r–z plane, s1 along (cos ω, sin ω),
+/// and s2 out of plane (θθ).
+Voigt in_plane_stress(double s1, double s2, double s3, double omega) {
+  const double c = std::cos(omega), s = std::sin(omega);
+  Voigt v = Voigt::Zero();
+  v << s1 * c * c + s3 * s * s, s1 * s * s + s3 * c * c, s2, (s1 - s3) * s * c, 0.0, 0.0;
+  return v;
+}
+
+/// Distance between two band normals (directions, so modulo π).
+double normal_gap(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), kPi);
+  return std::min(d, kPi - d);
+}
+
+/// The band normal of a law whose n_f and m are coaxial with σ (principal values u, v of
+/// D:n_f and D:m on the major and minor axes), restricted to the plane of those axes:
+/// x = n_1² maximises F(x) = [c0 + c1 x − (p + δb x)(q + δa x)/(2(1 − ν))]/G, the term
+/// (b·n)·(A^e)⁻¹(a·n) of r = 1 − F/χ with n_2 = 0. dF/dx = 0 gives
+/// x* = [2(1 − ν) c1 − δb q − δa p] / (2 δa δb).
+struct CoaxialBand {
+  double x;        ///< n_1² at the critical normal
+  double maximum;  ///< F(x*)
+};
+CoaxialBand coaxial_band(double b1, double b3, double a1, double a3, double nu) {
+  const double c0 = b3 * a3, c1 = b1 * a1 - b3 * a3, db = b1 - b3, da = a1 - a3;
+  const double x = (2.0 * (1.0 - nu) * c1 - db * a3 - da * b3) / (2.0 * da * db);
+  const double f = (c0 + c1 * x - (b3 + db * x) * (a3 + da * x) / (2.0 * (1.0 - nu))) / kShearModulus;
+  return {x, f};
+}
+
+}  // namespace
+
+TEST_CASE("the acoustic tensor is n·D^ep·n of the explicit fourth-order tangent", "[localisation]") {
+  std::mt19937_64 rng(7);
+  const ElasticConstants elastic = elastic_with(0.3);
+  const double lambda = elastic.lame_lambda(), g = elastic.shear_modulus();
+  auto delta = [](int i, int j) { return i == j ? 1.0 : 0.0; };
+  for (int trial = 0; trial < 5; ++trial) {
+    PlasticFlow flow{random_voigt(rng, 1.0), random_voigt(rng, 1.0), 0.0};
+    const Voigt dm = ElasticStiffness::of(elastic).stress_increment(flow.flow_direction);
+    // A hardening that keeps χ = n_f:D:m + H = G whatever the random tensors give.
+    flow.hardening_modulus_Pa = g - contract(flow.yield_normal, dm);
+    const Eigen::Matrix3d nf = to_matrix(flow.yield_normal), m = to_matrix(flow.flow_direction);
+    auto d = [&](int i, int j, int k, int l) {  // D_ijkl = λ δij δkl + G (δik δjl + δil δjk)
+      return lambda * delta(i, j) * delta(k, l) + g * (delta(i, k) * delta(j, l) + delta(i, l) * delta(j, k));
+    };
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero(), b = Eigen::Matrix3d::Zero();  // D:m, n_f:D
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) a(i, j) += d(i, j, k, l) * m(k, l), b(k, l) += nf(i, j) * d(i, j, k, l);
+    const double chi = (nf.cwiseProduct(a)).sum() + flow.hardening_modulus_Pa;
+    std::normal_distribution<double> normal;
+    const Eigen::Vector3d n = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    Eigen::Matrix3d expected = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) expected(j, k) += n[i] * (d(i, j, k, l) - a(i, j) * b(k, l) / chi) * n[l];
+    const Eigen::Matrix3d computed = acoustic_tensor(elastic, &flow, n);
+    CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
+  }
+}
+
+TEST_CASE("an elastic tangent never localises: det A(θ) = det A^e > 0 for every θ", "[localisation]") {
+  for (double nu : {0.0, 0.23, 0.33, 0.49}) {
+    const ElasticConstants elastic = elastic_with(nu);
+    for (int k = 0; k < 360; ++k) {
+      const double r = acoustic_determinant_ratio(elastic, nullptr, k * 0.5 * kDegree);
+      CHECK(r == Approx(1.0).margin(1e-14));
+    }
+  }
+  // A Mohr–Coulomb stress inside the surface has no flow and is reported elastic.
+  const MohrCoulombStrength strength = MohrCoulombStrength::of(39.0 * kDegree, 0.0, 0.0);
+  CHECK(mohr_coulomb_flow(in_plane_stress(-60e3, -80e3, -100e3, 0.3), strength).region == ReturnRegion::elastic);
+}
+
+// Rudnicki & Rice (1975), J. Mech. Phys. Solids 23, 371: for n_f = s/(2τ̄) + (μ/3) I and
+// m = s/(2τ̄) + (β/3) I (τ̄ = √J2), with the band normal in the plane of the major and
+// minor principal stresses,
+//   h_crit / G = (1 + ν)/(9(1 − ν)) (β − μ)² − (1 + ν)/2 (N + (β + μ)/3)²,  N = s_II / τ̄,
+// and the minimum of r is (H − h_crit)/(H + G + K μ β) (χ = h + G + Kμβ for this law).
+TEST_CASE("Drucker-Prager localises exactly below the Rudnicki-Rice critical hardening modulus", "[localisation]") {
+  struct Case {
+    double nu, mu, beta, n_intermediate;
+  };
+  // Non-associated with s_II = 0 (h_crit > 0: a band while still hardening), and
+  // associated with s_II < 0 (h_crit < 0: softening needed).
+  for (const Case c : {Case{0.3, 0.6, 0.1, 0.0}, Case{0.25, 0.5, 0.5, -0.3}}) {
+    const ElasticConstants elastic = elastic_with(c.nu);
+    const double g = elastic.shear_modulus(), k = elastic.bulk_modulus(), tau = 50e3, omega = 20.0 * kDegree;
+    // Deviatoric principal values: s2 = N τ̄, s1 + s3 = −s2, s1² + s2² + s3² = 2τ̄².
+    const double n = c.n_intermediate;
+    const double s1 = tau * 0.5 * (-n + std::sqrt(4.0 - 3.0 * n * n)), s2 = n * tau, s3 = -s1 - s2;
+    const Voigt s = in_plane_stress(s1, s2, s3, omega);  // deviatoric; the mean stress does not enter n_f, m
+    Voigt identity = Voigt::Zero();
+    identity.head<3>().setOnes();
+    PlasticFlow flow{s / (2.0 * tau) + c.mu / 3.0 * identity, s / (2.0 * tau) + c.beta / 3.0 * identity, 0.0};
+    const double h_crit = g * ((1.0 + c.nu) / (9.0 * (1.0 - c.nu)) * std::pow(c.beta - c.mu, 2) -
+                               (1.0 + c.nu) / 2.0 * std::pow(n + (c.beta + c.mu) / 3.0, 2));
+    // The critical normal: principal values of D:n_f = G s/τ̄ + Kμ I and D:m = G s/τ̄ + Kβ I.
+    const CoaxialBand band = coaxial_band(g * s1 / tau + k * c.mu, g * s3 / tau + k * c.mu, g * s1 / tau + k * c.beta,
+                                          g * s3 / tau + k * c.beta, c.nu);
+    REQUIRE(band.x > 0.0);
+    REQUIRE(band.x < 1.0);
+    const double alpha = std::acos(std::sqrt(band.x));  // band normal from the major principal axis
+    INFO("nu " << c.nu << " mu " << c.mu << " beta " << c.beta << " N " << n << " h_crit/G " << h_crit / g
+               << " band normal from sigma_1 " << alpha / kDegree << " deg");
+    // The closed form h_crit is the same number as the in-plane maximum F(x*) − χ0.
+    CHECK(band.maximum - g - k * c.mu * c.beta == Approx(h_crit).margin(1e-12 * g));
+    for (double offset : {+1e-6, -1e-6}) {
+      flow.hardening_modulus_Pa = h_crit + offset * g;
+      const Localisation found = find_localisation(elastic, flow);
+      const double expected_ratio =
+          (flow.hardening_modulus_Pa - h_crit) / (flow.hardening_modulus_Pa + g + k * c.mu * c.beta);
+      CHECK(found.localised == (offset < 0.0));
+      // r is found to rounding (its minimum is flat: a θ error δ costs r''δ²/2).
+      CHECK(found.determinant_ratio == Approx(expected_ratio).margin(1e-12));
+      // θ: 1e-6 rad is 100× the √ε floor of a flat minimum and 1e-4 of the 1° sampling.
+      CHECK(std::min(normal_gap(found.band_normal_rad, omega + alpha),
+                     normal_gap(found.band_normal_rad, omega - alpha)) < 1e-6);
+    }
+  }
+}
+
+// Plane strain, perfectly plastic Mohr–Coulomb on a face, c = 0, θθ the intermediate stress.
+// The band normal's angle from the major compression axis (σ3) equals the band's inclination
+// to the minor compression direction: Coulomb 45° + φ/2, Roscoe 45° + ψ/2, Arthur
+// 45° + (φ + ψ)/4. The exact bifurcation angle is the critical normal of coaxial_band with
+// D:n_f = λ tr(n_f) I + 2G n_f, tr n_f = 2 sin φ (and the same with ψ for m).
+TEST_CASE("plane-strain Mohr-Coulomb bands: Coulomb's angle when associated, between Roscoe and Coulomb when not",
+          "[localisation]") {
+  struct Case {
+    double phi_deg, psi_deg, nu;
+  };
+  for (const Case c : {Case{39.0, 0.0, 0.33}, Case{39.0, 10.0, 0.23}, Case{30.0, 30.0, 0.3}}) {
+    const ElasticConstants elastic = elastic_with(c.nu);
+    const double lambda = elastic.lame_lambda(), g = elastic.shear_modulus();
+    const MohrCoulombStrength strength = MohrCoulombStrength::of(c.phi_deg * kDegree, c.psi_deg * kDegree, 0.0);
+    const double sf = strength.sin_phi, sp = strength.sin_psi, omega = -35.0 * kDegree;
+    const double s3 = -100e3, s1 = s3 * (1.0 - sf) / (1.0 + sf), s2 = 0.5 * (s1 + s3);  // on f = 0
+    const MohrCoulombFlow on_face = mohr_coulomb_flow(in_plane_stress(s1, s2, s3, omega), strength);
+    REQUIRE(on_face.region == ReturnRegion::plane);
+    const Localisation found = find_localisation(elastic, on_face.flow);
+
+    const double b1 = 2.0 * lambda * sf + 2.0 * g * (1.0 + sf), b3 = 2.0 * lambda * sf - 2.0 * g * (1.0 - sf);
+    const double a1 = 2.0 * lambda * sp + 2.0 * g * (1.0 + sp), a3 = 2.0 * lambda * sp - 2.0 * g * (1.0 - sp);
+    const double chi = (1.0 + sf) * a1 - (1.0 - sf) * a3;  // n_f : D : m
+    const CoaxialBand band = coaxial_band(b1, b3, a1, a3, c.nu);
+    const double alpha = std::acos(std::sqrt(band.x));  // band normal from σ1 (minor compression)
+    const double from_major_compression = 90.0 * kDegree - alpha;
+    const double coulomb = (45.0 + c.phi_deg / 2.0) * kDegree, roscoe = (45.0 + c.psi_deg / 2.0) * kDegree;
+    INFO("phi " << c.phi_deg << " psi " << c.psi_deg << " nu " << c.nu << ": exact " << from_major_compression / kDegree
+                << " deg, Arthur " << 45.0 + (c.phi_deg + c.psi_deg) / 4.0 << " deg, min det ratio "
+                << found.determinant_ratio);
+    CHECK(found.localised);  // perfect plasticity: r_min ≤ 0 (= 0 when associated)
+    CHECK(found.determinant_ratio == Approx(1.0 - band.maximum / chi).margin(1e-12));
+    CHECK(std::min(normal_gap(found.band_normal_rad, omega + alpha), normal_gap(found.band_normal_rad, omega - alpha)) <
+          1e-6);
+    const double computed = normal_gap(found.band_normal_rad, omega + 0.5 * kPi);  // from the σ3 axis
+    if (c.psi_deg < c.phi_deg) {
+      CHECK(found.determinant_ratio < -1e-3);
+      CHECK(computed > roscoe + 1.0 * kDegree);
+      CHECK(computed < coulomb - 1.0 * kDegree);
+    } else {
+      CHECK(from_major_compression == Approx(coulomb).margin(1e-9));
+      CHECK(computed == Approx(coulomb).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("the Mohr-Coulomb face normal is the gradient of the yield function", "[localisation]") {
+  const MohrCoulombStrength strength = MohrCoulombStrength::of(39.0 * kDegree, 5.0 * kDegree, 0.0);
+  const double s3 = -100e3, s1 = s3 * (1.0 - strength.sin_phi) / (1.0 + strength.sin_phi);
+  const Voigt stress = in_plane_stress(s1, 0.4 * s1 + 0.6 * s3, s3, 0.7);
+  const MohrCoulombFlow on_face = mohr_coulomb_flow(stress, strength);
+  REQUIRE(on_face.region == ReturnRegion::plane);
+  std::mt19937_64 rng(3);
+  auto f = [&](const Voigt& s) { return strength.yield(PrincipalStresses(s).values()); };
+  for (int trial = 0; trial < 5; ++trial) {
+    const Voigt direction = random_voigt(rng, 1.0);
+    const double step = 1.0;  // Pa, against 1e5 Pa stresses: central differences to ~1e-10
+    const double slope = (f(stress + step * direction) - f(stress - step * direction)) / (2.0 * step);
+    CHECK(slope == Approx(contract(on_face.flow.yield_normal, direction)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("Mohr-Coulomb edges and the apex are reported, not evaluated", "[localisation]") {
+  const MohrCoulombStrength strength = MohrCoulombStrength::of(39.0 * kDegree, 0.0, 0.0);
+  const double s3 = -100e3, s1 = s3 * (1.0 - strength.sin_phi) / (1.0 + strength.sin_phi);
+  CHECK(mohr_coulomb_flow(in_plane_stress(s1, s1, s3, 0.2), strength).region == ReturnRegion::edge_compression);
+  CHECK(mohr_coulomb_flow(in_plane_stress(s1, s3, s3, 0.2), strength).region == ReturnRegion::edge_extension);
+  CHECK(mohr_coulomb_flow(Voigt::Zero(), strength).region == ReturnRegion::apex);
+}
