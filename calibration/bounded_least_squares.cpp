@@ -1,6 +1,7 @@
 #include "calibration/bounded_least_squares.hpp"
 
 #include <cmath>
+#include <exception>
 #include <map>
 #include <stdexcept>
 
@@ -64,6 +65,13 @@ class BatchedModel {
     return true;
   }
 
+  /// What the evaluator threw (an interrupt, a broken run folder): not thrown through Ceres,
+  /// which is not written for it, but kept, the fit stopped, and rethrown after Solve.
+  const std::exception_ptr& pending() const { return pending_; }
+  void keep(std::exception_ptr e) {
+    if (!pending_) pending_ = std::move(e);
+  }
+
   int evaluations() const { return static_cast<int>(cache_.size()); }
   int residual_count() const { return residual_count_; }
   const std::vector<FitParameter>& parameters() const { return parameters_; }
@@ -73,6 +81,7 @@ class BatchedModel {
   int residual_count_;
   const BatchEvaluator& evaluate_;
   std::map<std::vector<double>, std::vector<double>> cache_;
+  std::exception_ptr pending_;
 };
 
 class BatchedCost final : public ceres::CostFunction {
@@ -86,7 +95,13 @@ class BatchedCost final : public ceres::CostFunction {
     const std::vector<double> x = model_.to_x(parameters[0]);
     const bool jacobian = jacobians != nullptr && jacobians[0] != nullptr;
     std::vector<const std::vector<double>*> r;
-    if (!model_.residuals(x, jacobian, r)) return false;
+    if (model_.pending()) return false;
+    try {
+      if (!model_.residuals(x, jacobian, r)) return false;
+    } catch (...) {
+      model_.keep(std::current_exception());
+      return false;
+    }
     const std::size_t n = r[0]->size(), p = x.size();
     std::copy(r[0]->begin(), r[0]->end(), residuals);
     if (jacobian) {
@@ -107,6 +122,7 @@ class RecordIterations final : public ceres::IterationCallback {
   RecordIterations(const BatchedModel& model, const std::vector<double>& u, std::vector<FitIteration>& history)
       : model_(model), u_(u), history_(history) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    if (model_.pending()) return ceres::SOLVER_ABORT;
     if (summary.step_is_successful || summary.iteration == 0)
       history_.push_back({summary.iteration, summary.cost, model_.to_x(u_.data())});
     return ceres::SOLVER_CONTINUE;
@@ -154,6 +170,7 @@ BoundedFit fit_bounded_least_squares(const std::vector<FitParameter>& parameters
   options.callbacks.push_back(&recorder);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
+  if (model.pending()) std::rethrow_exception(model.pending());
   if (summary.termination_type == ceres::FAILURE && fit.history.empty())
     throw std::runtime_error("the model failed at the initial point: " + summary.message);
 
@@ -177,6 +194,10 @@ BoundedFit fit_bounded_least_squares(const std::vector<FitParameter>& parameters
     const double dx = model.neighbour(fit.values, j)[j] - fit.values[j];
     for (std::size_t i = 0; i < n; ++i) J(i, j) = ((*r[j + 1])[i] - (*r[0])[i]) / dx;
   }
+  fit.jacobian.assign(n, std::vector<double>(p));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < p; ++j)
+      fit.jacobian[i][j] = J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
   if (n <= p) return fit;
   double ssr = 0.0;
   for (double v : fit.residuals) ssr += v * v;

@@ -30,6 +30,9 @@ struct BoundedFit {
   std::vector<std::optional<double>> standard_errors;  ///< absent when n ≤ p or JᵀJ is singular
   std::vector<std::vector<double>> correlation;        ///< empty when the errors are absent
   std::vector<double> residuals;                       ///< at the solution
+  /// ∂r_i/∂x_j at the solution (n × p, forward differences over each parameter's step, in the
+  /// parameters' units); empty when the model failed there.
+  std::vector<std::vector<double>> jacobian;
   double initial_cost = 0.0, final_cost = 0.0;
   int iterations = 0;
   int evaluations = 0;  ///< distinct points evaluated
@@ -48,7 +51,8 @@ struct BoundedFitSettings {
 };
 
 /// Throws std::invalid_argument for bad bounds or steps, std::runtime_error when
-/// the model fails at the initial point.
+/// the model fails at the initial point; what the evaluator throws (e.g. an
+/// interrupt) stops the fit and is rethrown as it was.
 BoundedFit fit_bounded_least_squares(const std::vector<FitParameter>& parameters, int residual_count,
                                      const BatchEvaluator& evaluate, const BoundedFitSettings& settings = {});
 

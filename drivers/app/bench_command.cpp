@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/app/processor_name.hpp"
 #include "drivers/app/program_version.hpp"
 #include "drivers/output/checked_write.hpp"
@@ -106,15 +107,8 @@ int command_bench(const BenchOptions& options) {
     }
     write_standard_output(table);
     return failures == 0 ? 0 : 1;
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  } catch (const Interrupted&) {
-    std::fputs("interrupted\n", stderr);
-    return 130;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_code_of_current_exception();
   }
 }
 

@@ -46,6 +46,9 @@ void add_run(CLI::App& app, RunOptions& o) {
   add_scene(run, o);
   run.add_option("--out", o.out, "output folder (default results/<scene name>)")->type_name("DIR");
   run.add_flag("--force", o.force, "replace an --out folder that holds files ffp did not write");
+  run.add_flag("--allow-long", o.allow_long,
+               "run an MPM scene whose estimated wall time (ffp check prints it) is above a day; "
+               "FFP_ALLOW_LONG=1 in the environment does the same");
   run.add_option("--jobs", o.jobs,
                  "an inverse fit's or a meshed calibration's model runs at once (default one per core)")
       ->check(CLI::Range(1, 64));
@@ -76,6 +79,7 @@ void add_sweep(CLI::App& app, SweepOptions& o) {
   sweep.add_flag("--force", o.force,
                  "use a folder that holds files ffp did not write; with --emit, also discard the finished cases "
                  "that ran other scenes, so that they run afresh");
+  sweep.add_flag("--allow-long", o.allow_long, "let each case run even if estimated above a day (see ffp run --help)");
   add_scheduler(sweep, o.slurm, "local (default) or slurm: submit the emitted job array with sbatch, wait, collect");
 }
 

@@ -14,9 +14,10 @@ struct RunOptions {
   std::vector<std::string> overrides;  ///< --set key=value, in order
   std::optional<std::filesystem::path> out;
   bool quiet = false;
-  bool force = false;  ///< replace an --out folder that holds files ffp did not write
-  int jobs = 0;        ///< an inverse fit's model runs at once (0: one per core)
-  bool slurm = false;  ///< an inverse fit's model runs as Slurm job arrays
+  bool force = false;       ///< replace an --out folder that holds files ffp did not write
+  bool allow_long = false;  ///< run an MPM scene estimated above a day (run_cost.hpp)
+  int jobs = 0;             ///< an inverse fit's model runs at once (0: one per core)
+  bool slurm = false;       ///< an inverse fit's model runs as Slurm job arrays
 };
 
 struct SweepOptions {
@@ -25,6 +26,7 @@ struct SweepOptions {
   std::filesystem::path out, emit;
   int jobs = 1, threads = 1;
   bool force = false, slurm = false;
+  bool allow_long = false;  ///< passed to every case's run
 };
 
 struct ReportOptions {

@@ -88,8 +88,14 @@ class PenetrometerJob : public Job {
     out << "stages: " << s.stages.describe() << "\n";
     out << "CFL limit h_min/(c_p + |v|max): " << s.dt_limit_s << " s; time step " << s.dt_s << " s (Courant "
         << s.settings.courant << ", recomputed every step)\n";
-    out << "steps to end_time_s (at the initial step): about "
-        << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s)) << "\n";
+  }
+
+  std::optional<RunCost> cost(bool measure) override {
+    if (!measure) return plan_mpm_cost(run_->simulation(), scene_.end_time_s);
+    const RunCost measured = measure_mpm_cost(run_->simulation(), scene_.end_time_s);
+    run_.reset();  // one model in memory at a time
+    run_ = std::make_unique<mpm::FfpRun>(scene_.model);
+    return measured;
   }
 
   void run(RunContext& context) override;

@@ -23,6 +23,7 @@
 #include "drivers/app/program_version.hpp"
 #include "drivers/app/record_output.hpp"
 #include "drivers/output/csv_writer.hpp"
+#include "drivers/output/interrupt.hpp"
 #include "drivers/record_plausibility.hpp"
 #include "drivers/triaxial_test.hpp"
 #include "reports/plot.hpp"
@@ -92,9 +93,48 @@ class InverseJob : public Job {
     out << "; each Jacobian is " << scene_.parameters.size() + 1 << " runs side by side\n";
   }
 
+  /// One model run's cost (the forward scene at the initial values), and how many runs the
+  /// fit makes at most: (p + 1) at the start and up to p + 1 per iteration (a trial point and,
+  /// once accepted, its p neighbours), unless the bounds' line search asks for trial points of
+  /// its own.
+  std::optional<RunCost> cost(bool measure) override {
+    const RunRequest initial = request(initial_values());
+    json forward = load_scene_file(initial.scene_file.string());
+    for (const std::string& o : initial.overrides) apply_override(forward, o);
+    json echo;
+    std::optional<RunCost> one = make_job(forward, initial.scene_file.parent_path(), echo)->cost(measure);
+    if (one) one->runs = static_cast<long>((scene_.fit.max_iterations + 1) * (scene_.parameters.size() + 1));
+    return one;
+  }
+
   void run(RunContext& context) override;
 
  private:
+  std::vector<double> initial_values() const {
+    std::vector<double> x;
+    for (const FitParameter& q : scene_.parameters) x.push_back(q.initial);
+    return x;
+  }
+
+  /// The residual rows of each target, in the order residuals() gives them.
+  struct TargetRows {
+    std::string name;
+    std::size_t first = 0, count = 0;
+  };
+  std::vector<TargetRows> targets() const {
+    std::vector<TargetRows> t;
+    std::size_t next = 0;
+    auto add = [&](const char* name, std::size_t count) {
+      t.push_back({name, next, count});
+      next += count;
+    };
+    if (scene_.profile) add("profile", static_cast<std::size_t>(scene_.profile_points));
+    if (scene_.peak_deceleration_g) add("peak_deceleration", 1);
+    if (scene_.final_penetration_m) add("final_penetration", 1);
+    return t;
+  }
+  void require_identifiable(const BoundedFit& fit) const;
+
   int residual_count() const {
     return (scene_.profile ? scene_.profile_points : 0) + (scene_.peak_deceleration_g ? 1 : 0) +
            (scene_.final_penetration_m ? 1 : 0);
@@ -125,6 +165,50 @@ class InverseJob : public Job {
   Profile target_;
   std::vector<double> depths_;
 };
+
+/// A fit whose Jacobian says that no fitted parameter moves a target (or that a parameter
+/// moves no target) cannot identify what it reports: its "convergence" is Ceres finding a
+/// zero gradient. "Moves" is a change, over the parameter's difference step, above 1e-9 of
+/// the target's residuals: record.csv carries 10 significant digits, so a smaller change is
+/// the digits the runs are read with (a parameter the model ignores changes nothing at all).
+void InverseJob::require_identifiable(const BoundedFit& fit) const {
+  if (fit.jacobian.empty()) return;  // the model failed at the solution: said by the summary
+  const std::vector<FitParameter>& parameters = scene_.parameters;
+  std::vector<char> moves_a_target(parameters.size(), 0);
+  std::string unmoved, norms;
+  for (const TargetRows& target : targets()) {
+    double residual_norm = 0.0;
+    for (std::size_t i = target.first; i < target.first + target.count; ++i)
+      residual_norm += fit.residuals[i] * fit.residuals[i];
+    residual_norm = std::sqrt(residual_norm);
+    bool moved = false;
+    norms += (norms.empty() ? "" : "; ") + target.name + ":";
+    for (std::size_t j = 0; j < parameters.size(); ++j) {
+      double column = 0.0;  // |∂r/∂x_j| over the target's rows
+      for (std::size_t i = target.first; i < target.first + target.count; ++i)
+        column += fit.jacobian[i][j] * fit.jacobian[i][j];
+      column = std::sqrt(column);
+      char text[96];
+      std::snprintf(text, sizeof text, " %s %.3g", parameters[j].name.c_str(), column);
+      norms += text;
+      if (column * parameters[j].step > 1e-9 * residual_norm) {
+        moved = true;
+        moves_a_target[j] = 1;
+      }
+    }
+    if (!moved) unmoved += (unmoved.empty() ? "" : ", ") + target.name;
+  }
+  std::string idle;
+  for (std::size_t j = 0; j < parameters.size(); ++j)
+    if (!moves_a_target[j]) idle += (idle.empty() ? "" : ", ") + parameters[j].name;
+  if (unmoved.empty() && idle.empty()) return;
+  std::string problem;
+  if (!unmoved.empty()) problem = "no fitted parameter moves the target " + unmoved;
+  if (!idle.empty()) problem += (problem.empty() ? "" : "; ") + idle + " moves no target";
+  throw RunFailure("inverse: not identifiable: " + problem +
+                   " (Jacobian column norms |dr/dx| at the solution, per unit of each parameter: " + norms +
+                   "); fit parameters that change every target, or drop the target");
+}
 
 void InverseJob::run(RunContext& context) {
   const fs::path runs = context.out_dir / "runs";
@@ -166,14 +250,15 @@ void InverseJob::run(RunContext& context) {
   BoundedFit fit;
   try {
     fit = fit_bounded_least_squares(scene_.parameters, residual_count(), evaluate, scene_.fit);
+  } catch (const Interrupted&) {
+    throw;  // Ctrl-C: exit 130, not a failed fit
   } catch (const std::runtime_error& e) {
     throw RunFailure(std::string("inverse: ") + e.what() +
                      (last_failure.empty() ? "" : " (last run error: " + last_failure + ")"));
   }
+  require_identifiable(fit);
 
-  std::vector<double> initial;
-  for (const FitParameter& q : scene_.parameters) initial.push_back(q.initial);
-  const std::vector<RunOutcome> ends = run_points({initial, fit.values});  // both cached by now
+  const std::vector<RunOutcome> ends = run_points({initial_values(), fit.values});  // both cached by now
   const ModelRun start = read_model_run(ends[0].out_dir), fitted = read_model_run(ends[1].out_dir);
 
   // history.csv: the accepted iterations.

@@ -4,6 +4,7 @@
 /// a temporary output directory and writes summary.json around it.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drivers/app/run_cost.hpp"
 #include "drivers/scene/scene_reader.hpp"
 
 namespace ffp {
@@ -47,6 +49,10 @@ class Job {
   virtual void run(RunContext& context) = 0;
   /// What `ffp check` prints beyond "valid" (e.g. the time step and its limit).
   virtual void describe(std::ostream&) const {}
+  /// What a run will cost (run_cost.hpp): an MPM kind's steps and particles, with `measure`
+  /// also a probe's rate (which steps the job's model and then builds it afresh, so that the
+  /// run starts as if never probed); none for the kinds that take seconds.
+  virtual std::optional<RunCost> cost(bool /*measure*/) { return std::nullopt; }
 };
 
 /// Reads the kind's keys from the top-level scene reader (kind and name are

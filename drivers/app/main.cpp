@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/output/checked_write.hpp"
 #include "drivers/output/interrupt.hpp"
 
@@ -24,7 +25,7 @@ void wait_passively_by_default(int, char**, char**) { ::setenv("OMP_WAIT_POLICY"
 
 int main(int argc, char** argv) {
   ffp::install_interrupt_handlers();
-  const int code = ffp::run_command_line(argc, argv);
+  const int code = ffp::exit_code_after_command(ffp::run_command_line(argc, argv));
   // What any command printed (help and version included) reached standard output, or the exit code says not.
   try {
     ffp::finish_standard_output();

@@ -72,16 +72,19 @@ HistoryQuantity resolve_quantity(const std::string& q, const std::vector<std::st
 class MpmJob : public Job {
  public:
   MpmJob(MpmScene scene, std::string name)
-      : scene_(std::move(scene)), name_(std::move(name)), simulation_(scene_.model), initial_dt_s_(simulation_.dt_s) {
+      : scene_(std::move(scene)),
+        name_(std::move(name)),
+        simulation_(std::make_unique<mpm::Simulation>(scene_.model)),
+        initial_dt_s_(simulation_->dt_s) {
     for (const MpmProbe& probe : scene_.output.probes) probe_particles_.push_back(nearest_particle(probe));
     for (const std::string& q : scene_.output.history) quantities_.push_back(resolve_quantity(q, scene_.body_names));
   }
 
-  const mpm::Simulation& simulation() const { return simulation_; }
+  const mpm::Simulation& simulation() const { return *simulation_; }
   mpm::ModelSize size;  ///< the estimate the scene was checked with (printed by ffp check)
 
   void describe(std::ostream& out) const override {
-    const mpm::Simulation& s = simulation_;
+    const mpm::Simulation& s = *simulation_;
     out << "grid: " << s.grid.r.nodes() << " × " << s.grid.z.nodes() << " nodes, h_min = " << s.grid.min_spacing()
         << " m; particles: " << s.particles.size() << "\n";
     describe_memory(out, size);
@@ -91,18 +94,24 @@ class MpmJob : public Job {
         << (s.settings.fixed_dt_s ? " (fixed)"
                                   : " (Courant " + std::to_string(s.settings.courant) + ", recomputed every step)")
         << "\n";
-    out << "steps to end_time_s (at this step): about " << static_cast<long>(std::ceil(scene_.end_time_s / s.dt_s))
-        << "\n";
     if (s.settings.transfer == mpm::Transfer::usl)
       out << "note: USL takes the strain rate from v_i^{n+1}, which nodes of small mass at cell crossings can blow up\n"
              "      (measured: a bouncing block went unstable at Courant 0.5); MUSL is the robust choice\n";
+  }
+
+  std::optional<RunCost> cost(bool measure) override {
+    if (!measure) return plan_mpm_cost(*simulation_, scene_.end_time_s);
+    const RunCost measured = measure_mpm_cost(*simulation_, scene_.end_time_s);
+    simulation_.reset();  // one model in memory at a time
+    simulation_ = std::make_unique<mpm::Simulation>(scene_.model);
+    return measured;
   }
 
   void run(RunContext& context) override;
 
  private:
   std::size_t nearest_particle(const MpmProbe& probe) const {
-    const mpm::Particles& p = simulation_.particles;
+    const mpm::Particles& p = simulation_->particles;
     std::size_t best = 0;
     double best_d = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -120,7 +129,7 @@ class MpmJob : public Job {
 
   MpmScene scene_;
   std::string name_;
-  mpm::Simulation simulation_;
+  std::unique_ptr<mpm::Simulation> simulation_;  ///< rebuilt after a cost probe
   double initial_dt_s_;
   std::vector<std::size_t> probe_particles_;
   std::vector<HistoryQuantity> quantities_;  ///< scene_.output.history resolved
@@ -137,7 +146,7 @@ std::vector<std::string> MpmJob::columns() const {
 }
 
 std::vector<double> MpmJob::row() const {
-  const mpm::Simulation& s = simulation_;
+  const mpm::Simulation& s = *simulation_;
   const mpm::Diagnostics all = mpm::measure(s);
   std::vector<double> r = {s.time_s};
   for (const HistoryQuantity& q : quantities_) {
@@ -155,7 +164,7 @@ std::vector<double> MpmJob::row() const {
 }
 
 void MpmJob::run(RunContext& context) {
-  mpm::Simulation& s = simulation_;
+  mpm::Simulation& s = *simulation_;
   ParticleFieldSeries fields(context.out_dir / "fields");
   fs::create_directories(context.out_dir / "plots");
   CsvTable history(columns());

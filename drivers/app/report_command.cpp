@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/app/processor_name.hpp"
 #include "drivers/app/program_version.hpp"
 #include "drivers/output/interrupt.hpp"
@@ -155,15 +156,8 @@ int command_report(const ReportOptions& options) {
     std::fprintf(stderr, "wrote %s (%.1f s)%s\n", (out / "report.md").string().c_str(), total,
                  failures ? (" — " + std::to_string(failures) + " run(s) FAILED").c_str() : "");
     return failures == 0 ? 0 : 1;
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  } catch (const Interrupted&) {
-    std::fputs("interrupted: no report written\n", stderr);
-    return 130;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_code_of_current_exception("no report written");
   }
 }
 

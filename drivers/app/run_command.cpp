@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 #include <sys/prctl.h>
@@ -14,11 +15,13 @@
 #include <cstdlib>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/program_version.hpp"
 #include "drivers/app/version.hpp"
 #include "drivers/output/interrupt.hpp"
 #include "drivers/output/run_directory.hpp"
+#include "drivers/output/set_up_notice.hpp"
 #include "reports/plot.hpp"
 
 namespace ffp {
@@ -97,9 +100,25 @@ double run_into(RunDirectory& directory, LoadedScene& loaded, RunContext& contex
   }
 }
 
-int report_error(const std::exception& e, int code) {
-  std::fprintf(stderr, "error: %s\n", e.what());
-  return code;
+/// --allow-long, or FFP_ALLOW_LONG=1 in the environment: how `ffp run --allow-long` of an
+/// inverse fit and `ffp sweep --allow-long` pass it to the runs they start.
+bool long_runs_allowed(const RunOptions& a) {
+  if (a.allow_long) ::setenv("FFP_ALLOW_LONG", "1", 1);
+  const char* allowed = std::getenv("FFP_ALLOW_LONG");
+  return allowed != nullptr && std::string_view(allowed) == "1";
+}
+
+/// Says what an MPM run will cost before it starts, and refuses one estimated above a day
+/// unless the user allows it. The probe behind the estimate (0.2 s and a second build of the
+/// model) is spent only where the run could last a day even at the slowest rate of any scene.
+void weigh_cost(Job& job, const RunOptions& a, const std::string& what) {
+  std::optional<RunCost> cost = job.cost(false);
+  if (!cost || !cost->could_last(kLongRun_s)) return;
+  cost = job.cost(true);
+  if (cost->wall_s() > kLongRun_s && !long_runs_allowed(a))
+    throw SceneError("end_time_s: " + describe_cost(*cost) +
+                     ", above a day; pass --allow-long to run it anyway, or shorten end_time_s or coarsen the mesh");
+  if (!a.quiet) std::fprintf(stderr, "%s: %s\n", what.c_str(), describe_cost(*cost).c_str());
 }
 
 }  // namespace
@@ -107,7 +126,12 @@ int report_error(const std::exception& e, int code) {
 int command_run(const RunOptions& a) {
   stop_with_parent_run_pool();
   try {
+    long_runs_allowed(a);  // passed on to the runs this one starts
+    std::optional<SetUpNotice> setting_up;
+    if (!a.quiet) setting_up.emplace("setting up " + a.scene_file);
     LoadedScene loaded = load(a);
+    weigh_cost(*loaded.job, a, loaded.echo["kind"].get<std::string>() + " " + loaded.echo["name"].get<std::string>());
+    setting_up.reset();
     const fs::path out = a.out.value_or(fs::path("results") / loaded.echo["name"].get<std::string>());
     RunDirectory directory(out, "--out", a.force);
     RunContext context;
@@ -119,24 +143,8 @@ int command_run(const RunOptions& a) {
     const double wall = run_into(directory, loaded, context);
     if (!a.quiet) std::fprintf(stderr, "wrote %s (%.2f s)\n", out.string().c_str(), wall);
     return 0;
-  } catch (const SceneError& e) {
-    return report_error(e, 2);
-  } catch (const Interrupted& e) {
-    std::fputs("interrupted: no result written\n", stderr);
-    return 130;
-  } catch (const RunFailure& e) {
-    if (!e.reproducer().is_object()) return report_error(e, 1);
-    const fs::path file = fs::path("failed-step.json");
-    try {
-      write_file_atomically(file, e.reproducer().dump(2) + "\n");
-      std::fprintf(stderr, "error: %s\n  a scene that repeats the failing step: %s\n", e.what(), file.string().c_str());
-    } catch (const WriteFailure& unsaved) {
-      std::fprintf(stderr, "error: %s\n  (the scene that repeats the failing step was not saved: %s)\n", e.what(),
-                   unsaved.what());
-    }
-    return 1;
-  } catch (const std::exception& e) {
-    return report_error(e, 1);
+  } catch (...) {
+    return exit_code_of_current_exception("no result written");
   }
 }
 
@@ -147,13 +155,12 @@ int command_check(const RunOptions& a) {
     text << a.scene_file << ": valid " << loaded.echo["kind"].get<std::string>() << " scene '"
          << loaded.echo["name"].get<std::string>() << "'\n";
     loaded.job->describe(text);
+    if (const std::optional<RunCost> cost = loaded.job->cost(true)) text << "cost: " << describe_cost(*cost) << "\n";
     text << "resolved scene (defaults filled in):\n" << loaded.echo.dump(2) << "\n";
     write_standard_output(text.str());
     return 0;
-  } catch (const SceneError& e) {
-    return report_error(e, 2);
-  } catch (const std::exception& e) {
-    return report_error(e, 1);
+  } catch (...) {
+    return exit_code_of_current_exception();
   }
 }
 

@@ -200,7 +200,9 @@ void emit_sweep(const fs::path& dir_in, const std::vector<SweepCase>& cases, con
                    "mkdir -p logs\n"
                    "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-" +
                    threads + "}\"\n" + shell_quoted(options.ffp_binary.string()) +
-                   " run \"scenes/case_$n.json\" --out \"runs/case_$n\" --quiet 2> \"logs/case_$n.err\"\n"
+                   " run \"scenes/case_$n.json\" --out \"runs/case_$n\" --quiet" +
+                   (options.allow_long ? " --allow-long" : "") +
+                   " 2> \"logs/case_$n.err\"\n"
                    "status=$?\n"
                    "echo \"$status\" > \"logs/case_$n.exit\"\n"
                    "exit \"$status\"\n");

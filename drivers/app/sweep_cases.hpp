@@ -45,6 +45,7 @@ struct EmitOptions {
   int threads_per_case = 1;          ///< OpenMP threads and Slurm --cpus-per-task
   int parallel_jobs = 2;             ///< GNU parallel's default --jobs
   std::string job_name = "ffp-sweep";
+  bool allow_long = false;  ///< each case's run takes --allow-long
 };
 
 /// What an earlier emit into a folder left that the new cases must not inherit.

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/program_version.hpp"
 #include "drivers/app/sweep_cases.hpp"
@@ -99,6 +100,7 @@ int emit_cases(const fs::path& dir, const std::string& option, const std::vector
   emit.threads_per_case = options.threads;
   emit.parallel_jobs = std::max(options.jobs, 1);
   emit.job_name = "ffp-" + name;
+  emit.allow_long = options.allow_long;
   emit_sweep(dir, cases, emit);
   std::fprintf(stderr,
                "sweep: %zu cases in %s (cases.tsv, slurm.sbatch, parallel.sh); ffp collect %s builds sweep.csv\n",
@@ -145,6 +147,7 @@ int run_here(const fs::path& out, const std::vector<SweepCase>& cases, const std
 
 int command_sweep(const SweepOptions& options) {
   try {
+    if (options.allow_long) ::setenv("FFP_ALLOW_LONG", "1", 1);  // read by every case's `ffp run`
     const std::vector<SweepAxis> axes = sweep_axes(options.axes);
     if (!options.emit.empty() && (options.slurm || !options.out.empty()))
       throw SceneError("--emit: writes the case folder only; give --out with --scheduler slurm to also submit it");
@@ -156,15 +159,8 @@ int command_sweep(const SweepOptions& options) {
     if (!options.emit.empty()) return emit_cases(options.emit, "--emit", cases, options, name);
     if (options.slurm) return emit_cases(out, "--out", cases, options, name);
     return run_here(out, cases, keys, options);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  } catch (const Interrupted&) {
-    std::fputs("interrupted\n", stderr);
-    return 130;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_code_of_current_exception();
   }
 }
 
@@ -173,12 +169,8 @@ int command_collect(const fs::path& dir) {
     std::vector<std::string> keys;
     const std::vector<CaseResult> cases = collect_sweep(dir, keys);
     return report_collected(dir, keys, cases);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_code_of_current_exception();
   }
 }
 

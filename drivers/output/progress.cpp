@@ -29,9 +29,13 @@ void Progress::update(double done, long steps) {
   if (terminal_) {
     if (now - last_draw_ < std::chrono::milliseconds(200) && fraction < 1.0) return;
   } else {
-    if (fraction * 10.0 < next_decile_) return;
+    // A log is never silent for long: the first line within seconds of the start (a long run's
+    // first 10 % can take hours), then one per 10 % and at least one a minute.
+    const auto silence = lines_ == 0 ? std::chrono::seconds(2) : std::chrono::seconds(60);
+    if (fraction * 10.0 < next_decile_ && now - last_draw_ < silence) return;
     while (fraction * 10.0 >= next_decile_) ++next_decile_;
   }
+  ++lines_;
   last_draw_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double rate = elapsed > 0 ? steps / elapsed : 0.0;

@@ -1,6 +1,7 @@
 #pragma once
 /// Progress of a long run on stderr: a refreshed line (percent, simulated
-/// time, steps/s, ETA) on a terminal, one plain line per 10% otherwise.
+/// time, steps/s, ETA) on a terminal; otherwise plain lines, the first after
+/// 2 s, then one per 10% and at least one a minute.
 #include <chrono>
 #include <string>
 
@@ -24,6 +25,7 @@ class Progress {
   bool terminal_;
   bool finished_ = false;
   int next_decile_ = 1;
+  long lines_ = 0;  ///< lines drawn
   long calls_ = 0;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;

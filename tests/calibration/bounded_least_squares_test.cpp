@@ -114,3 +114,36 @@ TEST_CASE("a bound holds the fit and a failing model point is stepped around", "
   CHECK_FALSE(fit.standard_errors[0]);  // one residual, one parameter: nothing left to estimate the noise
   CHECK_THROWS_WITH(fit_bounded_least_squares({{"x", 3.0, -2.0, 2.0, 0.1}}, 1, model), Catch::Contains("outside"));
 }
+
+TEST_CASE("what the model throws mid-fit stops the fit and comes out as it was thrown", "[inverse]") {
+  // An interrupt in the middle of a fit (the evaluator's third batch) must reach the program
+  // as that interrupt, not as a failed model or a fit that "converged".
+  struct Stop {};
+  int batches = 0;
+  const BatchEvaluator model = [&](const std::vector<std::vector<double>>& points) {
+    if (++batches == 3) throw Stop{};
+    std::vector<std::vector<double>> out;
+    for (const auto& x : points) out.push_back({x[0] - 1.5, 0.1 * (x[0] - 1.5)});
+    return out;
+  };
+  CHECK_THROWS_AS(fit_bounded_least_squares({{"x", -1.0, -2.0, 2.0, 0.01}}, 2, model), Stop);
+  CHECK(batches == 3);  // stopped at the throw: no further batch was asked for
+}
+
+TEST_CASE("the Jacobian at the solution holds each parameter's effect, zero for one the model ignores", "[inverse]") {
+  // r_i = a·t_i − y_i does not depend on b: its column is exactly zero, a's is t_i.
+  const std::vector<double> t = {1.0, 2.0, 3.0};
+  const BatchEvaluator model = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<std::vector<double>> out;
+    for (const auto& x : points) out.push_back({x[0] * t[0] - 2.0, x[0] * t[1] - 4.0, x[0] * t[2] - 6.0});
+    return out;
+  };
+  const BoundedFit fit = fit_bounded_least_squares({{"a", 1.0, 0.0, 5.0, 0.01}, {"b", 1.0, 0.0, 5.0, 0.01}}, 3, model);
+  REQUIRE(fit.jacobian.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    REQUIRE(fit.jacobian[i].size() == 2);
+    CHECK(fit.jacobian[i][0] == Approx(t[i]).epsilon(1e-9));  // linear: the forward difference is exact
+    CHECK(fit.jacobian[i][1] == 0.0);
+  }
+  CHECK_FALSE(fit.standard_errors[1]);  // JᵀJ is singular: b is not identifiable
+}

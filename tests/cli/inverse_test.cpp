@@ -120,3 +120,30 @@ TEST_CASE("an inverse scene that cannot be fitted exits 2 naming the key", "[cli
     }
   }
 }
+
+TEST_CASE("a fitted parameter that cannot move the target is reported as not identifiable, not converged",
+          "[cli][inverse]") {
+  // The calibrated SSMC with φ'_r = φ'_p and ψ_p = ψ_r = 0 does not soften: η multiplies
+  // (φ'_p − φ'_r) = 0 and (ψ_p − ψ_r) = 0, so the runs at any η are the same to the last bit
+  // and the peak deceleration does not move with it. Ceres sees a zero gradient and would
+  // stop at once with CONVERGENCE.
+  Scratch scratch;
+  const json scene = {{"kind", "inverse"},
+                      {"name", "idle_eta"},
+                      {"forward_scene", FFP_SOURCE_DIR "/data/scenes/ffp_calibrated.json"},
+                      {"forward_overrides",
+                       {"mesh.min_cell_m=0.02", "end_time_s=0.02", "output.history_interval_s=0.001",
+                        "material.phi_residual_deg=60", "material.psi_peak_deg=0"}},
+                      {"peak_deceleration", {{"target_g", 15.0}}},
+                      {"parameters", {{{"key", "material.eta"}, {"initial", 10.0}, {"lower", 1.0}, {"upper", 50.0}}}}};
+  scratch.write_json("inverse.json", scene);
+  const auto r = run_ffp({"run", "inverse.json", "--out", "fit", "--quiet"}, scratch.path());
+  INFO(r.err);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("not identifiable") && Catch::Contains("peak_deceleration") &&
+                        Catch::Contains("material.eta 0"));
+  // One line says it (the run pool's lines before it list the model runs).
+  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+  CHECK(last.rfind("error: inverse: not identifiable", 0) == 0);
+  CHECK_FALSE(fs::exists(scratch.path() / "fit"));
+}
