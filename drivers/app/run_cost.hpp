@@ -6,15 +6,20 @@
 /// The steps to end_time_s come from the time step, the particles from the
 /// model, and the rate from a probe: a few steps of the scene's own model,
 /// timed here, now. A probe rather than a rate cached by `ffp bench`: a
-/// particle-step's cost depends on the scene (the contact's kind, the law, a
-/// subcycled elastic body take several times the reference FFP's) and on what
-/// else the machine is running, and a probe measures both; it costs a fraction
-/// of a second and needs no file kept per machine.
+/// particle-step's cost depends on the scene (probes of the shipped scenes at
+/// one load: 0.36 µs for the reference FFP, 0.58 for the SSMC push, 3.4 for the
+/// subcycled steel penetrometer) and on what else the machine is running, and a
+/// probe measures both; it costs a fraction of a second and needs no file kept
+/// per machine.
 ///
-/// How good it is (measured, docs/run-cost.md): within about ±40 % of the run's
-/// wall time on an idle or steadily loaded machine. The step count is the larger
-/// error: the probe's last step stands for the whole run, and an impact's step
-/// shrinks further as the sand is loaded.
+/// How good it is, measured (estimate against the run's wall time, two runs each, a 2-core
+/// machine with a load of 12–17): the reference FFP 0.89 and 1.25, the same at 5 mm cells 0.92
+/// and 0.76, the steel penetrometer 1.03, the geostatic column 1.19 and 0.86; the CPT push
+/// 0.55 and 0.28. A drop or a
+/// short run is within about ±25 % (mostly the load changing); a long push runs up to 3.6×
+/// longer than estimated, because the probe sees only its start: its step shrinks by a third
+/// as the sand loosens around the cone (1.04e4 steps estimated, 14739 taken) and its later
+/// steps cost twice its first ones (the contact and the yielding zone grow with depth).
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -41,9 +46,8 @@ struct RunCost {
   bool could_last(double limit_s) const;
 };
 
-/// A particle-step's wall time that no scene reaches: over 3000× the reference FFP's 0.3 µs,
-/// measured on a 2-core machine loaded by eight other builds (a subcycled steel penetrometer
-/// or 200 contact sweeps per step cost tens of times more than the reference, not thousands).
+/// A particle-step's wall time that no scene reaches: 300× the slowest shipped scene's probe
+/// (the subcycled steel penetrometer, 3.4 µs on 2 cores under a load of 16).
 inline constexpr double kSlowestParticleStep_s = 1e-3;
 
 /// An MPM run above this is refused unless the user allows it (--allow-long).
