@@ -45,6 +45,21 @@ double median(std::vector<double> v) {
   text += line;
 }
 
+/// The runs' folder of a bench, removed however the bench ends.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(fs::path path) : path_(std::move(path)) {}
+  ~ScratchFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+ private:
+  fs::path path_;
+};
+
 }  // namespace
 
 int command_bench(const BenchOptions& options) {
@@ -60,6 +75,7 @@ int command_bench(const BenchOptions& options) {
     if (requests.empty()) throw SceneError("--scenes: no benchmark scenes found in " + scenes.string());
 
     const fs::path scratch = fs::temp_directory_path() / ("ffp-bench-" + std::to_string(std::random_device{}()));
+    const ScratchFolder removed_at_the_end(scratch);  // also when a Ctrl-C or a failure ends the bench
     std::vector<std::vector<nlohmann::json>> summaries(requests.size());
     for (int r = 0; r < repeats; ++r) {
       // A fresh cache root each time: every repeat really runs.
@@ -70,8 +86,6 @@ int command_bench(const BenchOptions& options) {
         summaries[i].push_back(nlohmann::json::parse(in));
       }
     }
-    std::error_code ignored;
-    fs::remove_all(scratch, ignored);
 
     std::string table;  // the result, written at once and checked
     append(table,

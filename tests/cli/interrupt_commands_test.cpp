@@ -28,13 +28,15 @@ std::string read_text(const fs::path& file) {
 }
 
 /// `ffp ARGS` in `cwd`, leader of a process group of its own (as a shell starts a foreground
-/// job), stderr to `err`.
+/// job), stderr to `err`, TMPDIR `tmp` if given.
 class Command {
  public:
-  Command(const std::vector<std::string>& args, const fs::path& cwd, fs::path err) : err_(std::move(err)) {
+  Command(const std::vector<std::string>& args, const fs::path& cwd, fs::path err, const fs::path& tmp = {})
+      : err_(std::move(err)) {
     pid_ = ::fork();
     if (pid_ == 0) {
       ::setpgid(0, 0);
+      if (!tmp.empty()) ::setenv("TMPDIR", tmp.c_str(), 1);
       if (::chdir(cwd.c_str()) != 0) ::_exit(99);
       const int devnull = ::open("/dev/null", O_WRONLY);
       const int log = ::open(err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -110,18 +112,19 @@ TEST_CASE("Ctrl-C during an inverse fit exits 130 and writes no fit", "[cli][int
   CHECK(work.entries().empty());
 }
 
-TEST_CASE("Ctrl-C during ffp bench exits 130 and prints no table", "[cli][interrupt]") {
-  Scratch work, logs;
+TEST_CASE("Ctrl-C during ffp bench exits 130 and leaves no runs in the temporary folder", "[cli][interrupt]") {
+  Scratch work, logs, tmp;
   fs::create_directories(work.path() / "scenes");
   // A scene under a name bench measures, that runs far longer than the test waits.
   json slow = slow_point_scene();
   slow["name"] = "point_triaxial_ssmc";
   work.write_json("scenes/point_triaxial_ssmc.json", slow);
-  Command bench({"bench", "--scenes", "scenes", "--repeat", "1"}, work.path(), logs.path() / "err");
+  Command bench({"bench", "--scenes", "scenes", "--repeat", "1"}, work.path(), logs.path() / "err", tmp.path());
   REQUIRE(bench.wait_for("runs:"));
   CHECK(bench.interrupt() == 130);
   INFO(bench.err());
   CHECK(bench.err().find("interrupted") != std::string::npos);
+  CHECK(tmp.entries().empty());  // the bench's runs went to TMPDIR/ffp-bench-N
 }
 
 TEST_CASE("an FFP run shows progress within seconds, and Ctrl-C then exits 130 and writes no result",
