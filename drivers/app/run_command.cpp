@@ -103,9 +103,8 @@ double run_into(RunDirectory& directory, LoadedScene& loaded, RunContext& contex
 /// --allow-long, or FFP_ALLOW_LONG=1 in the environment: how `ffp run --allow-long` of an
 /// inverse fit and `ffp sweep --allow-long` pass it to the runs they start.
 bool long_runs_allowed(const RunOptions& a) {
-  if (a.allow_long) ::setenv("FFP_ALLOW_LONG", "1", 1);
   const char* allowed = std::getenv("FFP_ALLOW_LONG");
-  return allowed != nullptr && std::string_view(allowed) == "1";
+  return a.allow_long || (allowed != nullptr && std::string_view(allowed) == "1");
 }
 
 /// Says what an MPM run will cost before it starts, and refuses one estimated above a day
@@ -126,7 +125,7 @@ void weigh_cost(Job& job, const RunOptions& a, const std::string& what) {
 int command_run(const RunOptions& a) {
   stop_with_parent_run_pool();
   try {
-    long_runs_allowed(a);  // passed on to the runs this one starts
+    if (a.allow_long) ::setenv("FFP_ALLOW_LONG", "1", 1);  // for the runs this one starts
     std::optional<SetUpNotice> setting_up;
     if (!a.quiet) setting_up.emplace("setting up " + a.scene_file);
     LoadedScene loaded = load(a);
