@@ -1,6 +1,6 @@
 #pragma once
 /// The program's exit codes and the one place that turns what a command throws
-/// into them, so that every subcommand answers alike (README, "Exit codes"):
+/// into them, so that every subcommand answers alike (docs/outputs.md, "Exit codes"):
 ///   SceneError (bad input)                          → 2
 ///   Interrupted (Ctrl-C, SIGTERM)                   → 130
 ///   RunFailure, std::bad_alloc, any std::exception  → 1

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "drivers/app/commands.hpp"
+#include "drivers/app/exit_codes.hpp"
 #include "drivers/app/job.hpp"
 #include "drivers/app/key_reference.hpp"
 #include "drivers/output/checked_write.hpp"
@@ -22,9 +23,8 @@ int command_keys(const KeysOptions& options) {
     const std::vector<KindReference> reference = scene_reference(default_scenes_folder(), options.kind);
     write_standard_output(options.markdown ? reference_markdown(reference) : reference_text(reference));
     return 0;
-  } catch (const std::exception& e) {  // a probe refused (ReferenceError), or standard output (WriteFailure)
-    std::fprintf(stderr, "error: ffp keys: %s\n", e.what());
-    return 1;
+  } catch (...) {  // a probe refused (ReferenceError), or standard output (WriteFailure): exit 1
+    return exit_code_of_current_exception();
   }
 }
 
