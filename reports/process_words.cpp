@@ -9,7 +9,7 @@ namespace {
 
 // One alternative per kind of reference, each on its line below:
 // - "issue" or "issues" and a number (with or without #); the possessive of "issue"; "issue:"
-//   as a parenthesised label; what the issue asked or said;
+//   as a parenthesised label; what it asked or said;
 // - "stop" with a whole number ("stop 0.5 s" is a time), or hyphenated before a number;
 // - a review's lettered finding; a build named by the number it preceded; whose issue it is;
 // - a numbered session, or one pointed at ("this", "several", ...); an hour named by the
@@ -17,7 +17,7 @@ namespace {
 // \b keeps words that merely end in one of them out ("tissue", "nonstop").
 const std::regex& process_words_pattern() {
   static const std::regex pattern(
-      R"(\bissues? #?[0-9]+|\bissue(?:'|’)s\b|\(issue:)"
+      R"(\bissues? #?[0-9]+|\bissue(?:'|’)s\b|\((?:issue):)"
       R"(|\bthe issue (?:asks|asked|says|said|wants|wanted|requires|required|lists|states)\b)"
       R"(|\bstops? [0-9]+\b(?![.,][0-9])|\bstop-[0-9]+)"
       R"(|\breview F[0-9]+|\bbefore-[0-9]+\b|\bthe owner\b)"
