@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "drivers/output/csv_writer.hpp"
@@ -29,29 +28,8 @@ std::string number(double v) {
   return out.str();
 }
 
-/// File line of each data row, so messages point where an editor does.
-/// read_numeric_csv skips blank lines and '#' comments and takes the first
-/// other line as the header; the same rule here.
-std::vector<long> data_line_numbers(const std::filesystem::path& file) {
-  std::vector<long> lines;
-  std::ifstream in(file);
-  std::string line;
-  long number = 0;
-  bool header = false;
-  while (std::getline(in, line)) {
-    ++number;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
-    if (!header) {
-      header = true;
-      continue;
-    }
-    lines.push_back(number);
-  }
-  return lines;
-}
-
-void check(const LabCurve& curve, const std::vector<long>& lines) {
+/// `lines`: the file line of each row (CsvData::lines), so that messages point where an editor does.
+void check(const LabCurve& curve, const std::vector<std::size_t>& lines) {
   auto where = [&](std::size_t row) {
     return curve.source + ":" + (row < lines.size() ? std::to_string(lines[row]) : "row " + std::to_string(row + 1));
   };
@@ -102,7 +80,7 @@ LabCurve read_lab_curve(const std::filesystem::path& file) {
   curve.deviatoric_stress_Pa = data.column("deviatoric_stress_kPa");
   for (double& q : curve.deviatoric_stress_Pa) q *= 1e3;
   if (data.has("volumetric_strain")) curve.volumetric_strain = data.column("volumetric_strain");
-  check(curve, data_line_numbers(file));
+  check(curve, data.lines);
   return curve;
 }
 

@@ -1,12 +1,15 @@
 #include "drivers/app/exit_codes.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <string>
 
 #include "drivers/app/job.hpp"
 #include "drivers/output/interrupt.hpp"
+#include "drivers/output/machine_memory.hpp"
 #include "drivers/output/run_directory.hpp"
 #include "drivers/scene/scene_error.hpp"
 
@@ -25,6 +28,14 @@ int interrupted(std::string_view note) {
   else
     std::fprintf(stderr, "interrupted: %.*s\n", static_cast<int>(note.size()), note.data());
   return kExitInterrupted;
+}
+
+/// " (this process may use 102 MB: ulimit -v)": std::bad_alloc says nothing of the limit it met.
+/// The stack has unwound by now, freeing what was being built, so this text can be made.
+std::string memory_allowed() {
+  const MemoryLimit limit = usable_memory();
+  if (!std::isfinite(limit.bytes)) return "";
+  return " (this process may use " + format_bytes(limit.bytes) + ": " + limit.source + ")";
 }
 
 /// A numerical failure; with a reproducer, the scene that repeats the failing step beside it.
@@ -52,11 +63,12 @@ int exit_code_of_current_exception(std::string_view interrupted_note) {
   } catch (const Interrupted&) {
     return interrupted(interrupted_note);
   } catch (const std::bad_alloc&) {
-    return say(
-        "out of memory: the model or its output did not fit; use a coarser mesh or fewer particles per cell "
-        "(ffp check SCENE prints the model's size), a longer output.history_interval_s, or fewer runs at once "
-        "(--jobs)",
-        kExitRunFailed);
+    return say(("out of memory" + memory_allowed() +
+                ": the model or its output did not fit; use a coarser mesh or fewer particles per cell "
+                "(ffp check SCENE prints the model's size), a longer output.history_interval_s, a shorter record "
+                "or table, or fewer runs at once (--jobs)")
+                   .c_str(),
+               kExitRunFailed);
   } catch (const std::exception& e) {
     // A Ctrl-C reaches the whole process group: a model run it stopped, or a write it cut
     // short, can surface here as a failure. The user asked the command to stop, and it did.

@@ -153,10 +153,7 @@ class InverseJob : public Job {
   }
 
   RunRequest request(const std::vector<double>& x) const {
-    RunRequest q{"ffp", scene_.forward_scene, scene_.forward_overrides, 0.0};
-    q.overrides.push_back("output.field_times_s=[]");  // no particle fields: only the deceleration is compared
-    for (std::size_t j = 0; j < x.size(); ++j) q.overrides.push_back(assignment(scene_.parameters[j].name, x[j]));
-    return q;
+    return RunRequest{"ffp", scene_.forward_scene, model_run_overrides(scene_, x), 0.0};
   }
 
   std::string name_;

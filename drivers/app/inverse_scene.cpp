@@ -17,6 +17,13 @@ std::string assignment(const std::string& key, double value) {
   return key + "=" + buffer;
 }
 
+std::vector<std::string> model_run_overrides(const InverseScene& scene, const std::vector<double>& x) {
+  std::vector<std::string> overrides = scene.forward_overrides;
+  overrides.push_back("output.field_times_s=[]");  // no particle fields: only the deceleration is compared
+  for (std::size_t j = 0; j < x.size(); ++j) overrides.push_back(assignment(scene.parameters[j].name, x[j]));
+  return overrides;
+}
+
 namespace {
 
 /// The forward scene must be an ffp scene that takes `overrides`; its own error otherwise.
@@ -53,7 +60,8 @@ std::optional<ScalarTarget> read_target(SceneReader& scene, const char* key, con
 
 InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
   InverseScene out;
-  out.forward_scene = scene.existing_file("forward_scene", scene_dir, Doc("the ffp scene whose parameters are fitted"));
+  out.forward_scene = scene.existing_file("forward_scene", scene_dir, kSceneFileLimit,
+                                          Doc("the ffp scene whose parameters are fitted"));
   json forward_json;
   try {
     forward_json = load_scene_file(out.forward_scene.string());
@@ -74,7 +82,7 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
     }
   }
   const fs::path forward_dir = out.forward_scene.parent_path();
-  check_forward(forward_json, forward_dir, out.forward_overrides, "forward_overrides");
+  check_forward(forward_json, forward_dir, model_run_overrides(out, {}), "forward_overrides");
 
   std::string fittable;
   for (const char* key : kInverseKeys) fittable += (fittable.empty() ? "`" : ", `") + std::string(key) + "`";
@@ -117,10 +125,10 @@ InverseScene read_inverse_scene(SceneReader& scene, const fs::path& scene_dir) {
     auto value_of = [&](const FitParameter& q) {
       return what[0] == 'i' ? q.initial : what[0] == 'l' ? q.lower : q.upper;
     };
-    std::vector<std::string> overrides = out.forward_overrides;
-    for (const FitParameter& q : out.parameters) overrides.push_back(assignment(q.name, value_of(q)));
+    std::vector<double> values;
+    for (const FitParameter& q : out.parameters) values.push_back(value_of(q));
     try {
-      check_forward(forward_json, forward_dir, overrides, what);
+      check_forward(forward_json, forward_dir, model_run_overrides(out, values), what);
     } catch (const SceneError& e) {
       const std::string message = e.what();
       const std::string cause = message.substr(message.find(refuses) + refuses.size());

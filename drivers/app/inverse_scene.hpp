@@ -49,4 +49,10 @@ InverseScene read_inverse_scene(SceneReader& scene, const std::filesystem::path&
 /// "key=value" with every digit of the value, so that a point is one run's cache key.
 std::string assignment(const std::string& key, double value);
 
+/// The overrides of one model run at parameter values `x` (one per parameter, in order; none to
+/// check the forward overrides alone): forward_overrides, no particle fields, each parameter.
+/// The fit's runs get exactly these, and read_inverse_scene checks the forward scene with them,
+/// so that `ffp check` refuses what the runs would.
+std::vector<std::string> model_run_overrides(const InverseScene& scene, const std::vector<double>& x);
+
 }  // namespace ffp

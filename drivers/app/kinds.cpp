@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cctype>
 
 #include "drivers/app/job.hpp"
 #include "drivers/app/kinds.hpp"
@@ -31,9 +32,17 @@ std::string kind_list(std::string_view open, std::string_view close) {
 }
 
 std::string read_scene_name(SceneReader& scene, std::string_view kind) {
-  return scene.text("name", kind,
-                    Doc("names the output folder `results/<name>/`: 1–100 letters, digits, `_`, `-`, `.`, the first a "
-                        "letter or digit"));
+  const std::string name =
+      scene.text("name", kind,
+                 Doc("names the output folder `results/<name>/`: 1–100 letters, digits, `_`, `-`, `.`, the first a "
+                     "letter or digit"));
+  const auto allowed = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-';
+  };
+  if (name.empty() || name.size() > 100 || !std::isalnum(static_cast<unsigned char>(name[0])) ||
+      !std::all_of(name.begin(), name.end(), allowed))
+    scene.fail("name", "'" + name + "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
+  return name;
 }
 
 std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& scene_dir, json& echo, KeyLog* log) {
@@ -57,7 +66,7 @@ std::unique_ptr<Job> make_job(const json& scene, const std::filesystem::path& sc
                         .by_default("required")
                         .within(kind_list("`", "`")));
   echo["kind"] = kind;
-  read_scene_name(top, kind);
+  read_scene_name(top, kind);  // refused here, not only by `ffp run`: check and an inverse fit's check agree
   top.allow("description", Doc("free text, copied to summary.json unchanged").within("text"));
   if (scene.contains("description")) echo["description"] = scene.at("description");
   return entry->make(top, scene_dir);

@@ -5,6 +5,7 @@
 
 #include "drivers/app/commands.hpp"
 #include "drivers/app/exit_codes.hpp"
+#include "drivers/app/thread_limit.hpp"
 #include "drivers/output/checked_write.hpp"
 #include "drivers/output/interrupt.hpp"
 
@@ -25,6 +26,7 @@ void wait_passively_by_default(int, char**, char**) { ::setenv("OMP_WAIT_POLICY"
 
 int main(int argc, char** argv) {
   ffp::install_interrupt_handlers();
+  ffp::cap_environment_threads();
   const int code = ffp::exit_code_after_command(ffp::run_command_line(argc, argv));
   // What any command printed (help and version included) reached standard output, or the exit code says not.
   try {

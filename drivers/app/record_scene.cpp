@@ -33,7 +33,7 @@ RecordScene read_record_scene(SceneReader& scene, const fs::path& scene_dir) {
   RecordScene out;
   RecordSettings& s = out.settings;
   out.record_csv = scene.existing_file(
-      "record_csv", scene_dir,
+      "record_csv", scene_dir, kCsvFileLimit,
       Doc("the record: time_s and exactly one of deceleration_g (net, + while slowing: 0 at rest, −1 in free fall) or "
           "acceleration_m_s2 (the accelerometer's reading, sky positive: +g at rest); optionally pore_pressure_kPa"));
   if (scene.has("sensor_range_g") && scene.has("sensor_range_m_s2"))

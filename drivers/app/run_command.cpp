@@ -1,6 +1,5 @@
 /// `ffp run` and `ffp check`.
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -47,16 +46,7 @@ LoadedScene load(const RunOptions& a) {
   for (const auto& assignment : a.overrides) apply_override(scene, assignment);
   LoadedScene loaded;
   loaded.scene_dir = fs::path(a.scene_file).parent_path();
-  loaded.job = make_job(scene, loaded.scene_dir, loaded.echo);
-  const std::string name = loaded.echo.value("name", "");
-  const auto allowed = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-';
-  };
-  const bool safe = !name.empty() && name.size() <= 100 && std::isalnum(static_cast<unsigned char>(name[0])) &&
-                    std::all_of(name.begin(), name.end(), allowed);
-  if (!safe)
-    throw SceneError("name: '" + name +
-                     "' must be 1–100 letters, digits, '_', '-' or '.' (it names the output folder)");
+  loaded.job = make_job(scene, loaded.scene_dir, loaded.echo);  // the name too: it names the output folder
   return loaded;
 }
 

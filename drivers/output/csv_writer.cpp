@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "drivers/output/run_directory.hpp"
+#include "drivers/scene/input_file.hpp"
 #include "drivers/scene/scene_error.hpp"
 
 namespace ffp {
@@ -85,12 +85,14 @@ std::vector<std::string> split_line(const std::string& line) {
 
 CsvData read_numeric_csv(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!in) throw SceneError(name + ": cannot open the CSV file (does it exist?)");
+  const std::string text = read_input_file(file, kCsvFileLimit);
   CsvData data;
   std::string line;
   std::size_t line_number = 0;
-  while (std::getline(in, line)) {
+  for (std::size_t start = 0; start < text.size();) {  // line by line, without a second copy of the text
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    line.assign(text, start, end - start);
+    start = end + 1;
     ++line_number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     if (line[line.find_first_not_of(" \t")] == '#') continue;  // comment lines
@@ -115,6 +117,7 @@ CsvData read_numeric_csv(const std::filesystem::path& file) {
                          "': must be a finite number, got '" + cell + "'");
       data.values[c].push_back(v);
     }
+    data.lines.push_back(line_number);
   }
   if (data.columns.empty()) throw SceneError(name + ": the CSV file is empty (expected a header row and data)");
   return data;

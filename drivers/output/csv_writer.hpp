@@ -31,11 +31,14 @@ class CsvTable {
   std::vector<double> data_;
 };
 
-/// A numeric CSV read back (first row is the header). Errors name file, row
-/// and column: missing columns, non-numeric cells, NaN/inf.
+/// A numeric CSV read back (first row is the header; blank lines and '#'
+/// comments skipped; a UTF-8 byte-order mark accepted). Errors name file, row
+/// and column: missing columns, non-numeric cells, NaN/inf; and the file itself
+/// when it is not a regular file or is larger than kCsvFileLimit (input_file.hpp).
 struct CsvData {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  // values[column][row]
+  std::vector<std::size_t> lines;           // the file's line of each row, for messages
   bool has(const std::string& name) const;
   const std::vector<double>& column(const std::string& name) const;
 };

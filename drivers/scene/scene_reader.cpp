@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace ffp {
@@ -314,11 +313,11 @@ std::filesystem::path SceneReader::file(std::string_view key, const std::filesys
 }
 
 std::filesystem::path SceneReader::existing_file(std::string_view key, const std::filesystem::path& scene_dir,
-                                                 const Doc& doc) {
+                                                 const InputFileLimit& limit, const Doc& doc) {
   std::filesystem::path resolved = file(key, scene_dir, doc);
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(resolved, error))
-    fail(key, "'" + resolved.string() + "' is not a file (paths are relative to the scene's folder)");
+  const std::string problem = input_file_problem(resolved, limit);
+  if (!problem.empty())
+    fail(key, "'" + resolved.string() + "' " + problem + " (paths are relative to the scene's folder)");
   return resolved;
 }
 
@@ -526,11 +525,7 @@ json parse_scene_text(const std::string& text, const std::string& source_name) {
 }
 
 json load_scene_file(const std::string& file_path) {
-  std::ifstream in(file_path, std::ios::binary);
-  if (!in) throw SceneError(file_path + ": cannot open the scene file (does it exist?)");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  json scene = parse_scene_text(buffer.str(), file_path);
+  json scene = parse_scene_text(read_input_file(file_path, kSceneFileLimit), file_path);
   if (!scene.is_object()) throw SceneError(file_path + ": the scene must be a JSON object ({...})");
   return scene;
 }

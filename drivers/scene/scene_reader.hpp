@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drivers/scene/input_file.hpp"
 #include "drivers/scene/scene_error.hpp"
 
 namespace ffp {
@@ -133,8 +134,10 @@ class SceneReader {
   std::string text(std::string_view key, std::string_view fallback, const Doc& doc);
   /// A file named by the text at `key`: relative to the scene's folder unless absolute, lexically normalised.
   std::filesystem::path file(std::string_view key, const std::filesystem::path& scene_dir, const Doc& doc);
-  /// The same, refused unless it is a regular file (a FIFO or /dev/zero would hang its reader).
-  std::filesystem::path existing_file(std::string_view key, const std::filesystem::path& scene_dir, const Doc& doc);
+  /// The same, refused unless it is a regular file within `limit` (input_file.hpp: a named pipe or
+  /// /dev/zero would hang its reader).
+  std::filesystem::path existing_file(std::string_view key, const std::filesystem::path& scene_dir,
+                                      const InputFileLimit& limit, const Doc& doc);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed, const Doc& doc);
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed, std::string_view fallback,
                      const Doc& doc);
@@ -241,7 +244,8 @@ std::string nearest(std::string_view word, const std::vector<std::string>& candi
 
 /// Parse scene text; syntax errors become SceneError with line and column.
 json parse_scene_text(const std::string& text, const std::string& source_name);
-/// Read and parse a scene file (missing/empty/unreadable files are SceneErrors).
+/// Read and parse a scene file (missing, empty, unreadable, not a regular file or larger than
+/// kSceneFileLimit: SceneError).
 json load_scene_file(const std::string& file_path);
 /// Apply one `--set key.path=value` override (value parsed as JSON, else a string;
 /// `null` removes the key, so that its default applies).

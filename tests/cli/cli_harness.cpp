@@ -55,12 +55,13 @@ std::string shell_quote(const std::string& word) {
 }
 }  // namespace
 
-CommandResult run_ffp(const std::vector<std::string>& args, const fs::path& cwd, const fs::path& stdout_to) {
+CommandResult run_ffp(const std::vector<std::string>& args, const fs::path& cwd, const fs::path& stdout_to,
+                      const std::string& before) {
   static int counter = 0;
   const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(++counter);
   const fs::path out_file = fs::temp_directory_path() / ("ffp-cli-out-" + tag);
   const fs::path err_file = fs::temp_directory_path() / ("ffp-cli-err-" + tag);
-  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(FFP_BINARY);
+  std::string command = "cd " + shell_quote(cwd.string()) + " && " + before + " " + shell_quote(FFP_BINARY);
   for (const auto& a : args) command += " " + shell_quote(a);
   command += " > " + shell_quote((stdout_to.empty() ? out_file : stdout_to).string()) + " 2> " +
              shell_quote(err_file.string());

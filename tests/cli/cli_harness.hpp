@@ -30,9 +30,10 @@ class Scratch {
 };
 
 /// Run `ffp ARGS...` inside `cwd`; its standard output goes to `stdout_to` when given
-/// (e.g. /dev/full), else into the result.
+/// (e.g. /dev/full), else into the result. `before`: shell words put before the program, e.g.
+/// "timeout 60" (a test that would otherwise hang fails with 124) or "ulimit -v 100000 &&".
 CommandResult run_ffp(const std::vector<std::string>& args, const std::filesystem::path& cwd,
-                      const std::filesystem::path& stdout_to = {});
+                      const std::filesystem::path& stdout_to = {}, const std::string& before = "");
 
 /// A small valid point scene (MC triaxial), for tests to break one key at a time.
 nlohmann::json good_point_scene();

@@ -104,6 +104,9 @@ TEST_CASE("an inverse scene that cannot be fitted exits 2 naming the key", "[cli
       {"a forward scene of another kind", "forward_scene",
        [](json& j) { j["forward_scene"] = FFP_SOURCE_DIR "/data/scenes/cpt_reference.json"; }},
       {"nothing to fit", "nothing to fit", [](json& j) { j.erase("record"); }},
+      // Each model run refuses a name that cannot name a folder: so must the check.
+      {"a forward override the model runs would refuse", "forward_overrides: the forward scene refuses it: name:",
+       [](json& j) { j["forward_overrides"].push_back("name=two words"); }},
   };
   for (const Case& c : cases) {
     DYNAMIC_SECTION(c.what) {
@@ -117,6 +120,10 @@ TEST_CASE("an inverse scene that cannot be fitted exits 2 naming the key", "[cli
       CHECK(r.exit_code == 2);
       CHECK_THAT(r.err, Catch::Contains(c.must_mention));
       CHECK_FALSE(fs::exists(scratch.path() / "fit"));
+      // `ffp check` refuses what the run refuses.
+      const auto check = run_ffp({"check", "inverse.json"}, scratch.path());
+      CHECK(check.exit_code == 2);
+      CHECK_THAT(check.err, Catch::Contains(c.must_mention));
     }
   }
 }
