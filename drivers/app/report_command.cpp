@@ -51,8 +51,9 @@ int command_report(const ReportOptions& options) {
         options.jobs > 0 ? options.jobs : static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
     if (!fs::is_directory(scenes)) throw SceneError("--scenes: '" + scenes.string() + "' is not a folder of scenes");
 
-    // Refuse a folder of the user's before hours of runs, not after.
-    require_replaceable(out, "--out", force);
+    // Refuse a folder of the user's, or one another report is writing, before hours of runs, not
+    // after; the folder is this report's (its lock) from now on.
+    RunDirectory directory(out, "--out", force);
     claim_persistent_folder(cache, "--cache", "run cache", force);
 
     const auto start = std::chrono::steady_clock::now();
@@ -92,7 +93,6 @@ int command_report(const ReportOptions& options) {
       }
     }
 
-    RunDirectory directory(out, "--out", force);
     fs::create_directories(directory.path() / "figures");
     fs::create_directories(directory.path() / "tables");
     Markdown document;
