@@ -154,7 +154,7 @@ std::string last_line(const fs::path& log) {
 std::string run_key(const RunRequest& request, const std::string& program_version) {
   // The scene as it will run: overrides applied, so that an override equal to the
   // file's value (a sweep's reference point) shares the plain run's cache entry.
-  nlohmann::json scene = nlohmann::json::parse(read_file(request.scene_file));
+  nlohmann::json scene = load_scene_file(request.scene_file.string());  // a regular file within its cap
   for (const auto& o : request.overrides) apply_override(scene, o);
   // The description left out (prose only) and integers as doubles, so that a scene's 2500 and an
   // override's 2500.0 give the same key.
