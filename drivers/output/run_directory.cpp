@@ -52,9 +52,16 @@ std::vector<std::string> entries_under(const fs::path& folder) {
   return entries;
 }
 
+/// `file` opened for reading, or a closed stream when it is not a regular file: a named pipe in a
+/// folder the user named would otherwise keep the check waiting for a writer.
+std::ifstream open_if_regular(const fs::path& file) {
+  std::error_code ec;
+  return fs::is_regular_file(file, ec) ? std::ifstream(file) : std::ifstream();
+}
+
 /// The entries a folder's manifest lists; nullopt-like empty set plus false when it has none (or it is unreadable).
 bool read_manifest(const fs::path& folder, std::set<std::string>& listed) {
-  std::ifstream in(folder / kOutputManifest);
+  std::ifstream in = open_if_regular(folder / kOutputManifest);
   if (!in) return false;
   const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
   if (!manifest.is_object() || !manifest.contains("files") || !manifest["files"].is_array()) return false;
@@ -96,12 +103,12 @@ bool looks_like_cache_entry(const fs::directory_entry& entry) {
 /// A run or report folder written before manifests existed: its summary.json
 /// names the ffp version, or its report.md is the validation report.
 bool written_before_manifests(const fs::path& folder) {
-  std::ifstream summary(folder / "summary.json");
+  std::ifstream summary = open_if_regular(folder / "summary.json");
   if (summary) {
     const nlohmann::json s = nlohmann::json::parse(summary, nullptr, false);
     return s.is_object() && s.contains("ffp_version");
   }
-  std::ifstream report(folder / "report.md");
+  std::ifstream report = open_if_regular(folder / "report.md");
   std::string first_line;
   return report && std::getline(report, first_line) && first_line == "# ffp validation report";
 }

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -97,6 +98,19 @@ TEST_CASE("a file given as --out is never replaced, even with --force", "[cli]")
   check_refused(run_ffp({"run", scene.string(), "--out", "notes.txt", "--quiet", "--force"}, scratch.path()),
                 "--out: 'notes.txt' is a file, not a folder (--force replaces only folders)", scratch, before);
   CHECK(read_text(scratch.path() / "notes.txt") == "field notes");
+}
+
+TEST_CASE("an --out folder holding named pipes is judged without opening them", "[cli]") {
+  // ffp reads a folder's manifest and summary.json to decide whether it wrote it: a pipe there
+  // would keep it waiting for a writer (timeout: a hang fails the test instead).
+  Scratch scratch;
+  const auto scene = scratch.write_json("scene.json", good_point_scene());
+  fs::create_directories(scratch.path() / "out");
+  for (const char* name : {"summary.json", ".ffp-output.json", "report.md"})
+    REQUIRE(::mkfifo((scratch.path() / "out" / name).c_str(), 0644) == 0);
+  const auto before = scratch.entries();
+  check_refused(run_ffp({"run", scene.string(), "--out", "out", "--quiet"}, scratch.path(), {}, "timeout 120"),
+                "--out: 'out' holds 'report.md' and 1 more, which ffp did not write", scratch, before);
 }
 
 TEST_CASE("a name too long for the file system is refused in one line, one that fits is written", "[cli]") {
