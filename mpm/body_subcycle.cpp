@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "models/math_constants.hpp"
+#include "mpm/internal_force.hpp"
+#include "mpm/particle_update.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/velocity_gradient.hpp"
 
@@ -51,28 +53,35 @@ void BodySubcycle::advance(Simulation& s, const std::vector<NodalImpulse>& impul
   }
 }
 
+// The step: the body's nodes, N substeps on them, the contact's work, the particles' update.
 template <int S>
 void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses) {
+  collect_support<S>(s);
+  load_nodes(s);
+  const std::vector<std::int32_t> impulse_slots = add_impulses(s, impulses);
+  const int substeps = substeps_;  // from the step's start (predict_contact_velocity)
+  const double h = s.dt_s / substeps;
+  for (int k = 0; k < substeps; ++k) substep<S>(s, h);
+  add_contact_work(s, impulses, impulse_slots, h);
+  update_particles<S>(s);
+  last_substeps_ = substeps;
+  total_substeps_ += substeps;
+}
+
+// The body's nodes and cells of this step, in the order its particles reach them.
+template <int S>
+void BodySubcycle::collect_support(const Simulation& s) {
   constexpr int support = S * S;
   const Body& b = s.bodies[body_];
-  const NodalField& f = s.grid.fields[b.field];
-  MaterialGroup& group = s.groups[b.group];
-  Particles& P = s.particles;
-  const std::size_t first = b.begin, last = b.end, count = last - first;
-  const double dt = s.dt_s, floor = s.mass_floor_kg;
-  // The subcycled body smooths the volumetric part under either smoothing mode (its own B-bar).
-  const bool smoothed = s.settings.strain_smoothing != StrainSmoothing::off;
-
-  // The body's nodes and cells of this step, in the order its particles reach them.
   for (std::size_t k : nodes_) node_slot_[k] = -1;
   for (std::size_t c : cells_) cell_slot_[c] = -1;
   nodes_.clear();
   cells_.clear();
-  particle_nodes_.resize(count * support);
-  particle_cell_.resize(count);
-  for (std::size_t p = first; p < last; ++p) {
+  particle_nodes_.resize((b.end - b.begin) * support);
+  particle_cell_.resize(b.end - b.begin);
+  for (std::size_t p = b.begin; p < b.end; ++p) {
     const ShapeWeights& w = s.weights[p];
-    std::int32_t* slots = &particle_nodes_[(p - first) * support];
+    std::int32_t* slots = &particle_nodes_[(p - b.begin) * support];
     for (int bz = 0; bz < S; ++bz) {
       for (int a = 0; a < S; ++a) {
         const std::size_t k = s.grid.node(w.node_r + a, w.node_z + bz);
@@ -87,131 +96,149 @@ void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses)
       cell_slot_[s.cell[p]] = static_cast<std::int32_t>(cells_.size());
       cells_.push_back(s.cell[p]);
     }
-    particle_cell_[p - first] = cell_slot_[s.cell[p]];
+    particle_cell_[p - b.begin] = cell_slot_[s.cell[p]];
   }
+}
+
+// The step's mapping on the body's nodes: m_i, v_i^0 = p_i/m_i, f_i^ext; displacement 0.
+void BodySubcycle::load_nodes(const Simulation& s) {
+  const NodalField& f = s.grid.fields[s.bodies[body_].field];
   const std::size_t n = nodes_.size();
   for (auto* a : {&mass_, &vr_, &vz_, &vr0_, &vz0_, &fr_, &fz_, &er_, &ez_, &ur_, &uz_}) a->assign(n, 0.0);
   for (std::size_t c = 0; c < n; ++c) {
     const std::size_t k = nodes_[c];
     mass_[c] = f.mass[k];
-    if (!(mass_[c] > floor)) continue;   // empty: stays at rest, as in integrate_grid
-    vr_[c] = vr0_[c] = f.velocity_r[k];  // p_i/m_i, constrained components already 0
+    if (!(mass_[c] > s.mass_floor_kg)) continue;  // empty: stays at rest, as in integrate_grid
+    vr_[c] = vr0_[c] = f.velocity_r[k];           // p_i/m_i, constrained components already 0
     vz_[c] = vz0_[c] = f.velocity_z[k];
     er_[c] = f.external_force_r[k];
     ez_[c] = f.external_force_z[k];
   }
-  // The contact impulse as a constant force over the step: Σ_k δt J_i/Δt_s = J_i.
-  std::vector<std::int32_t> impulse_slots(impulses.size());
+}
+
+// The contact impulse as a constant force over the step: Σ_k δt J_i/Δt_s = J_i.
+// Returns each impulse's compact node.
+std::vector<std::int32_t> BodySubcycle::add_impulses(const Simulation& s, const std::vector<NodalImpulse>& impulses) {
+  std::vector<std::int32_t> slots(impulses.size());
   for (std::size_t j = 0; j < impulses.size(); ++j) {
     const std::int32_t c = node_slot_[impulses[j].node];
-    if (c < 0 || !(mass_[c] > floor)) throw std::logic_error("a contact impulse on a node the body does not reach");
-    impulse_slots[j] = c;
-    er_[c] += impulses[j].r / dt;
-    ez_[c] += impulses[j].z / dt;
+    if (c < 0 || !(mass_[c] > s.mass_floor_kg))
+      throw std::logic_error("a contact impulse on a node the body does not reach");
+    slots[j] = c;
+    er_[c] += impulses[j].r / s.dt_s;
+    ez_[c] += impulses[j].z / s.dt_s;
   }
+  return slots;
+}
 
-  const int substeps = substeps_;  // from the step's start (predict_contact_velocity)
-  const double h = dt / substeps;
-  std::vector<double>& cell_volume = cell_volume_;
-  std::vector<double>& cell_mean = cell_mean_;
-  const std::size_t cells = cells_.size();
+// One substep of δt = h: the step's stages on the body's nodes and particles alone.
+template <int S>
+void BodySubcycle::substep(Simulation& s, double h) {
+  // The subcycled body smooths the volumetric part under either smoothing mode (its own B-bar).
+  const bool smoothed = s.settings.strain_smoothing != StrainSmoothing::off;
+  if (smoothed) mean_stress_of_cells(s);
+  internal_forces<S>(s, smoothed);
+  integrate_nodes(s, h);
+  strain_increments<S>(s, h);
+  if (smoothed) smooth_volumetric_strain(s);
+  update_stresses(s, h);
+}
 
-  for (int k = 0; k < substeps; ++k) {
-    // B-bar mean stress per cell (smooth_mean_stress, this body's particles only).
-    if (smoothed) {
-      cell_volume.assign(cells, 0.0);
-      cell_mean.assign(cells, 0.0);
-      for (std::size_t p = first; p < last; ++p) {
-        const std::int32_t c = particle_cell_[p - first];
-        cell_volume[c] += P.volume[p];
-        cell_mean[c] += P.volume[p] * trace(P.stress[p]) / 3.0;
-      }
-      for (std::size_t c = 0; c < cells; ++c) cell_mean[c] /= cell_volume[c];
-    }
-    // f_i^int = −Σ_p V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r]
-    std::fill(fr_.begin(), fr_.end(), 0.0);
-    std::fill(fz_.begin(), fz_.end(), 0.0);
-    for (std::size_t p = first; p < last; ++p) {
-      const ShapeWeights& w = s.weights[p];
-      const std::int32_t* slots = &particle_nodes_[(p - first) * support];
-      Voigt sig = P.stress[p];
-      if (smoothed) {
-        const double shift = cell_mean[particle_cell_[p - first]] - trace(sig) / 3.0;
-        sig[0] += shift;
-        sig[1] += shift;
-        sig[2] += shift;
-      }
-      const double V = P.volume[p], hoop = sig[2] * w.inverse_r;
-      for (int bz = 0; bz < S; ++bz) {
-        for (int a = 0; a < S; ++a) {
-          const std::int32_t c = slots[bz * S + a];
-          const double N = w.wr[a] * w.wz[bz], Gr = w.gr[a] * w.wz[bz], Gz = w.wr[a] * w.gz[bz];
-          fr_[c] -= V * (sig[0] * Gr + sig[3] * Gz + hoop * N);
-          fz_[c] -= V * (sig[3] * Gr + sig[1] * Gz);
-        }
-      }
-    }
-    // v_i^{k+1} = v_i^k + δt (f^int + f^ext + J/Δt_s)/m_i; constrained components 0; u_i += δt v_i^{k+1}
-    for (std::size_t c = 0; c < n; ++c) {
-      if (!(mass_[c] > floor)) continue;
-      const double inverse_m = 1.0 / mass_[c];
-      const std::uint8_t bits = constraint_bits_[nodes_[c]];
-      vr_[c] = (bits & constrain_r) ? 0.0 : vr_[c] + h * (fr_[c] + er_[c]) * inverse_m;
-      vz_[c] = (bits & constrain_z) ? 0.0 : vz_[c] + h * (fz_[c] + ez_[c]) * inverse_m;
-      ur_[c] += h * vr_[c];
-      uz_[c] += h * vz_[c];
-    }
-    // Δε_p = δt sym(L_p), L_p = Σ_i v_i ⊗ G_ip, L_θθ = Σ_i S_ip v_r,i/r_p; V_p ← V_p det(I + δt L)
-    for (std::size_t p = first; p < last; ++p) {
-      const ShapeWeights& w = s.weights[p];
-      const std::int32_t* slots = &particle_nodes_[(p - first) * support];
-      VelocityGradient L;
-      for (int bz = 0; bz < S; ++bz) {
-        for (int a = 0; a < S; ++a) {
-          const std::int32_t c = slots[bz * S + a];
-          const double N = w.wr[a] * w.wz[bz], Gr = w.gr[a] * w.wz[bz], Gz = w.wr[a] * w.gz[bz];
-          L.rr += vr_[c] * Gr;
-          L.rz += vr_[c] * Gz;
-          L.zr += vz_[c] * Gr;
-          L.zz += vz_[c] * Gz;
-          L.tt += vr_[c] * N;
-        }
-      }
-      L.tt *= w.inverse_r;
-      apply_velocity_gradient(L, h, s.strain_increment[p], s.spin_dt[p], P.volume[p]);
-    }
-    // Strain smoothing (smooth_volumetric_strain, this body's particles only).
-    if (smoothed) {
-      cell_volume.assign(cells, 0.0);
-      cell_mean.assign(cells, 0.0);
-      for (std::size_t p = first; p < last; ++p) {
-        const std::int32_t c = particle_cell_[p - first];
-        cell_volume[c] += P.volume[p];
-        cell_mean[c] += P.volume[p] * trace(s.strain_increment[p]);
-      }
-      for (std::size_t p = first; p < last; ++p) {
-        const std::int32_t c = particle_cell_[p - first];
-        Voigt& de = s.strain_increment[p];
-        const double shift = (cell_mean[c] / cell_volume[c] - trace(de)) / 3.0;
-        de[0] += shift;
-        de[1] += shift;
-        de[2] += shift;
-      }
-    }
-    // Jaumann rotation, then the law (update_stresses).
-    for (std::size_t p = first; p < last; ++p) {
-      Voigt& sig = P.stress[p];
-      const double w = s.spin_dt[p];
-      const double rr = sig[0], zz = sig[1], rz = sig[3];
-      sig[0] = rr + 2.0 * w * rz;
-      sig[1] = zz - 2.0 * w * rz;
-      sig[3] = rz + w * (zz - rr);
-      P.strain[p] += s.strain_increment[p];
-    }
-    group.update(first, last, P.stress, s.strain_increment, h);
+// cell_volume_[c] = Σ_{p∈c} V_p and cell_mean_[c] = Σ_{p∈c} term(p) over the body's particles.
+template <class Term>
+void BodySubcycle::sum_cells(const Simulation& s, Term&& term) {
+  const Body& b = s.bodies[body_];
+  cell_volume_.assign(cells_.size(), 0.0);
+  cell_mean_.assign(cells_.size(), 0.0);
+  for (std::size_t p = b.begin; p < b.end; ++p) {
+    const std::int32_t c = particle_cell_[p - b.begin];
+    cell_volume_[c] += s.particles.volume[p];
+    cell_mean_[c] += term(p);
   }
+}
 
-  // Work of the contact forces: Σ_k δt F_i·½(v^k + v^{k+1}) = F_i·(u_i − ½δt(v^N − v^0)), full 2π.
+// B-bar mean stress per cell (smooth_mean_stress, this body's particles only):
+//   σ̄_m,c = Σ_{p∈c} V_p tr(σ_p)/3 / Σ_{p∈c} V_p
+void BodySubcycle::mean_stress_of_cells(const Simulation& s) {
+  const Particles& P = s.particles;
+  sum_cells(s, [&](std::size_t p) { return P.volume[p] * trace(P.stress[p]) / 3.0; });
+  for (std::size_t c = 0; c < cells_.size(); ++c) cell_mean_[c] /= cell_volume_[c];
+}
+
+// f_i^int = −Σ_p V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r]  (compute_internal_forces on the body's nodes)
+template <int S>
+void BodySubcycle::internal_forces(const Simulation& s, bool smoothed) {
+  const Body& b = s.bodies[body_];
+  const Particles& P = s.particles;
+  std::fill(fr_.begin(), fr_.end(), 0.0);
+  std::fill(fz_.begin(), fz_.end(), 0.0);
+  for (std::size_t p = b.begin; p < b.end; ++p) {
+    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
+    const ForceStress sig = smoothed ? b_bar_force_stress(P.stress[p], cell_mean_[particle_cell_[p - b.begin]])
+                                     : own_force_stress(P.stress[p]);
+    add_internal_force<S>(
+        s.weights[p], sig, P.volume[p], [slots](int a, int bz) { return static_cast<std::size_t>(slots[bz * S + a]); },
+        fr_.data(), fz_.data());
+  }
+}
+
+// v_i^{k+1} = v_i^k + δt (f^int + f^ext + J/Δt_s)/m_i; constrained components 0; u_i += δt v_i^{k+1}
+void BodySubcycle::integrate_nodes(const Simulation& s, double h) {
+  for (std::size_t c = 0; c < nodes_.size(); ++c) {
+    if (!(mass_[c] > s.mass_floor_kg)) continue;
+    const double inverse_m = 1.0 / mass_[c];
+    const std::uint8_t bits = constraint_bits_[nodes_[c]];
+    vr_[c] = (bits & constrain_r) ? 0.0 : vr_[c] + h * (fr_[c] + er_[c]) * inverse_m;
+    vz_[c] = (bits & constrain_z) ? 0.0 : vz_[c] + h * (fz_[c] + ez_[c]) * inverse_m;
+    ur_[c] += h * vr_[c];
+    uz_[c] += h * vz_[c];
+  }
+}
+
+// Δε_p = δt sym(L_p), L_p = Σ_i v_i ⊗ G_ip, L_θθ = Σ_i S_ip v_r,i/r_p; V_p ← V_p det(I + δt L)
+// (compute_strain_increments on the body's nodes)
+template <int S>
+void BodySubcycle::strain_increments(Simulation& s, double h) {
+  const Body& b = s.bodies[body_];
+  for (std::size_t p = b.begin; p < b.end; ++p) {
+    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
+    const VelocityGradient L = velocity_gradient<S>(
+        s.weights[p], [slots](int a, int bz) { return static_cast<std::size_t>(slots[bz * S + a]); }, vr_.data(),
+        vz_.data());
+    apply_velocity_gradient(L, h, s.strain_increment[p], s.spin_dt[p], s.particles.volume[p]);
+  }
+}
+
+// Strain smoothing (smooth_volumetric_strain, this body's particles only):
+//   Δε_p ← Δε_p + (Σ_{p∈c} V_p Δε_v,p / Σ_{p∈c} V_p − Δε_v,p)/3 · I
+void BodySubcycle::smooth_volumetric_strain(Simulation& s) {
+  const Body& b = s.bodies[body_];
+  sum_cells(s, [&](std::size_t p) { return s.particles.volume[p] * trace(s.strain_increment[p]); });
+  for (std::size_t p = b.begin; p < b.end; ++p) {
+    const std::int32_t c = particle_cell_[p - b.begin];
+    Voigt& de = s.strain_increment[p];
+    const double shift = (cell_mean_[c] / cell_volume_[c] - trace(de)) / 3.0;
+    de[0] += shift;
+    de[1] += shift;
+    de[2] += shift;
+  }
+}
+
+// Jaumann rotation, then the law (update_stresses on the body's particles).
+void BodySubcycle::update_stresses(Simulation& s, double h) {
+  const Body& b = s.bodies[body_];
+  Particles& P = s.particles;
+  for (std::size_t p = b.begin; p < b.end; ++p) {
+    rotate_by_spin(P.stress[p], s.spin_dt[p]);
+    P.strain[p] += s.strain_increment[p];
+  }
+  s.groups[b.group].update(b.begin, b.end, P.stress, s.strain_increment, h);
+}
+
+// Work of the contact forces: Σ_k δt F_i·½(v^k + v^{k+1}) = F_i·(u_i − ½δt(v^N − v^0)), full 2π.
+void BodySubcycle::add_contact_work(const Simulation& s, const std::vector<NodalImpulse>& impulses,
+                                    const std::vector<std::int32_t>& impulse_slots, double h) {
+  const double dt = s.dt_s;
   double work = 0.0;
   for (std::size_t j = 0; j < impulses.size(); ++j) {
     const std::int32_t c = impulse_slots[j];
@@ -219,13 +246,17 @@ void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses)
             impulses[j].z / dt * (uz_[c] - 0.5 * h * (vz_[c] - vz0_[c]));
   }
   contact_work_J_ += kTwoPi * work;
+}
 
-  // v_p ← α (v_p + Σ S (v^N − v^0)) + (1 − α) Σ S v^N;  x_p ← x_p + Σ S u   (kept inside the walls)
-  const double alpha = s.settings.flip_fraction;
-  const Walls& walls = s.walls;
-  for (std::size_t p = first; p < last; ++p) {
+// v_p ← α (v_p + Σ S (v^N − v^0)) + (1 − α) Σ S v^N;  x_p ← x_p + Σ S u   (kept inside the walls)
+// (update_particles on the body's nodes)
+template <int S>
+void BodySubcycle::update_particles(Simulation& s) {
+  const Body& b = s.bodies[body_];
+  Particles& P = s.particles;
+  for (std::size_t p = b.begin; p < b.end; ++p) {
     const ShapeWeights& w = s.weights[p];
-    const std::int32_t* slots = &particle_nodes_[(p - first) * support];
+    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
     double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0, ur = 0.0, uz = 0.0;
     for (int bz = 0; bz < S; ++bz) {
       for (int a = 0; a < S; ++a) {
@@ -239,19 +270,9 @@ void BodySubcycle::run(Simulation& s, const std::vector<NodalImpulse>& impulses)
         uz += N * uz_[c];
       }
     }
-    P.vr[p] = alpha * (P.vr[p] + dvr) + (1.0 - alpha) * vr;
-    P.vz[p] = alpha * (P.vz[p] + dvz) + (1.0 - alpha) * vz;
-    double r = P.r[p] + ur, z = P.z[p] + uz;
-    if (r < walls.r_min || r > walls.r_max || z < walls.z_min || z > walls.z_max) {
-      r = std::clamp(r, walls.r_min, walls.r_max);
-      z = std::clamp(z, walls.z_min, walls.z_max);
-      ++s.wall_clamps;
-    }
-    P.r[p] = r;
-    P.z[p] = z;
+    blend_flip_pic(P, p, s.settings.flip_fraction, vr, vz, dvr, dvz);
+    move_within_walls(P, p, P.r[p] + ur, P.z[p] + uz, s.walls, s.wall_clamps);
   }
-  last_substeps_ = substeps;
-  total_substeps_ += substeps;
 }
 
 }  // namespace ffp::mpm

@@ -74,6 +74,27 @@ class BodySubcycle {
  private:
   template <int S>
   void run(Simulation& simulation, const std::vector<NodalImpulse>& impulses);
+  // The pieces of run(), each the counterpart of a stage of the step on the body's own nodes.
+  template <int S>
+  void collect_support(const Simulation& simulation);
+  void load_nodes(const Simulation& simulation);
+  std::vector<std::int32_t> add_impulses(const Simulation& simulation, const std::vector<NodalImpulse>& impulses);
+  template <int S>
+  void substep(Simulation& simulation, double h);
+  template <class Term>
+  void sum_cells(const Simulation& simulation, Term&& term);
+  void mean_stress_of_cells(const Simulation& simulation);
+  template <int S>
+  void internal_forces(const Simulation& simulation, bool smoothed);
+  void integrate_nodes(const Simulation& simulation, double h);
+  template <int S>
+  void strain_increments(Simulation& simulation, double h);
+  void smooth_volumetric_strain(Simulation& simulation);
+  void update_stresses(Simulation& simulation, double h);
+  void add_contact_work(const Simulation& simulation, const std::vector<NodalImpulse>& impulses,
+                        const std::vector<std::int32_t>& impulse_slots, double h);
+  template <int S>
+  void update_particles(Simulation& simulation);
 
   std::size_t body_;
   std::vector<std::uint8_t> constraint_bits_;  ///< per grid node

@@ -1,6 +1,7 @@
 #include "mpm/ffp_model.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -55,21 +56,15 @@ int cells_in(double length, double cell) { return std::max(1, static_cast<int>(s
 FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
   const FfpMesh& m = d.mesh;
   const double h = m.min_cell_m, R = d.shape.base_radius_m;
-  auto need = [](bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument(what);
-  };
-  need(h > 0.0 && m.max_cell_m >= h && m.below_cell_m >= h, "mesh: need 0 < min_cell ≤ below_cell and ≤ max_cell");
-  need(m.growth > 1.0 && m.growth <= 2.0, "mesh: growth must be in (1, 2]");
-  need(m.min_compressed_cell_m >= 0.0 && m.min_compressed_cell_m <= m.below_cell_m,
-       "mesh: need 0 ≤ min_compressed_cell ≤ below_cell");
-  need(m.tip_offset_cells >= 0.0 && m.tip_offset_cells < 1.0, "mesh: tip_offset_cells must be in [0, 1)");
-  need(m.edge_offset_cells >= 0.0 && m.edge_offset_cells < 1.0, "mesh: edge_offset_cells must be in [0, 1)");
-  need(R > 0.0 && R + h <= d.soil.radius_m, "the penetrometer's base radius plus a cell must fit inside the chamber");
-  need(m.fine_radius_m > R, "mesh: fine_radius must exceed the penetrometer's base radius");
-  need(m.band_below_m > 0.0 && m.band_below_m + 2.0 * h < d.soil.depth_m,
-       "mesh: band_below must leave at least two cells of sand below the band");
-  need(m.fine_above_m > 0.0 && m.air_above_m > 0.0, "mesh: fine_above and air_above must be > 0");
-  need(d.shape.total_length_m() >= 3.0 * h, "the penetrometer must be at least three min cells long");
+  // The sizes' ranges and how they fit together are the scene reader's to check, with the
+  // key's name in the message (drivers/app/ffp_scene.cpp): here the invariants the layout's
+  // arithmetic relies on (cells of positive size that grow, offsets within a cell, a band
+  // inside the chamber), which any description that passed the reader holds.
+  assert(h > 0.0 && m.max_cell_m >= h && m.below_cell_m >= h && m.growth > 1.0);
+  assert(m.tip_offset_cells >= 0.0 && m.tip_offset_cells < 1.0);
+  assert(m.edge_offset_cells >= 0.0 && m.edge_offset_cells < 1.0);
+  assert(R > 0.0 && R + h <= d.soil.radius_m && m.fine_radius_m > R);
+  assert(m.band_below_m > 0.0 && m.band_below_m + 2.0 * h < d.soil.depth_m);
 
   FfpGridLayout g;
   // Radial: uniform cells no smaller than h on [0, R] and [R, fine], a node exactly at R;
@@ -83,7 +78,9 @@ FfpGridLayout ffp_grid_layout(const FfpDescription& d) {
     const int inside = std::max(1, static_cast<int>(std::floor(R / h - m.edge_offset_cells + 1e-9)));
     fine_cell = R / (inside + m.edge_offset_cells);
     const int cells = static_cast<int>(std::ceil(fine / fine_cell - 1e-9));
-    need(cells * fine_cell <= d.soil.radius_m * (1.0 + 1e-12), "mesh: edge_offset_cells leaves no room in the chamber");
+    // Not a range of one key: the reader cannot tell before the layout is made.
+    if (cells * fine_cell > d.soil.radius_m * (1.0 + 1e-12))
+      throw std::invalid_argument("mesh: edge_offset_cells leaves no room in the chamber");
     fine = cells * fine_cell;
     append_uniform(g.r_nodes_m, fine, cells);
   } else {
@@ -145,15 +142,13 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
     m.wave_source_m = std::pair{0.0, 0.0};  // the impact point: the sand's surface on the axis
     m.absorbing_bottom_row = g.base_row;    // the sand's base, above the grid's empty bottom cell
   }
-  if (s.near_ppc_r < 1 || s.near_ppc_z < 1 || s.far_ppc_r < 1 || s.far_ppc_z < 1)
-    throw std::invalid_argument("particles per cell must be ≥ 1");
+  assert(s.near_ppc_r >= 1 && s.near_ppc_z >= 1 && s.far_ppc_r >= 1 && s.far_ppc_z >= 1);  // the reader's range
   m.bodies.push_back(BodyDescription{
       "soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0}, s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
       d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0}) : std::nullopt,
       s.disconnected_density_ratio * s.density_kg_m3});
   const double h = d.mesh.min_cell_m;
-  if (s.near_spacing_m && !(*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h))
-    throw std::invalid_argument("the near zone's particle spacing must be in (0, min_cell_m]");
+  assert(!s.near_spacing_m || (*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h));  // the reader's range
   const double spacing_r = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_r;
   const double spacing_z = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_z;
   m.seeding_zones.push_back(
@@ -178,6 +173,80 @@ ModelSize estimate_ffp_size(const FfpDescription& d, double budget_bytes) {
   return estimate_model_size(build_model(d, layout, geometry), budget_bytes);
 }
 
+namespace {
+
+/// The settings both kinds of penetrometer take from the description alike.
+template <class Settings>
+Settings penetrometer_settings(const FfpDescription& d) {
+  Settings settings;
+  settings.shape = d.shape;
+  settings.tip_z_m = 0.0;
+  settings.contact = d.contact;
+  settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
+  return settings;
+}
+
+RigidPenetrometerSettings rigid_settings(const FfpDescription& d) {
+  auto settings = penetrometer_settings<RigidPenetrometerSettings>(d);
+  settings.mass_kg = d.mass_kg;
+  settings.velocity_m_s = d.velocity_m_s;
+  settings.motion = d.prescribed ? RigidMotion::prescribed : RigidMotion::free;
+  settings.force = d.force;
+  settings.external_force_N = d.external_force_N;
+  settings.surface = d.surface;
+  settings.project_particles = d.project_particles;
+  return settings;
+}
+
+/// Whether the deformable body takes its own substeps: Subcycle::automatic compares
+/// the soil's CFL step (without the body's p-wave; its speed still counts) with the body's.
+bool subcycles(Simulation& s, const MaterialGroup& body, Subcycle subcycle) {
+  if (subcycle != Subcycle::automatic) return subcycle == Subcycle::on;
+  s.main_step_end = body.begin;
+  const double soil_limit = cfl_time_step_limit(s);
+  s.main_step_end = s.particles.size();
+  return soil_limit >= kSubcycleRatio * group_time_step_limit(s, body);
+}
+
+/// The deformable penetrometer's own nodal field (two-body contact) and its exact mass:
+/// the particles, seeded in its outline, scaled to carry the description's mass.
+std::unique_ptr<DeformablePenetrometer> make_deformable(Simulation& s, const FfpDescription& d) {
+  // The scene reader refuses these with a rigid body's keys: a deformable body has none of them.
+  assert(!d.prescribed && !d.project_particles && d.surface == ContactSurface::nodes);
+  s.grid.fields.resize(2);
+  s.grid.fields[1].resize(s.grid.nodes());
+  s.bodies[1].field = 1;
+  MaterialGroup& group = s.groups[1];
+  double sampled = 0.0;
+  for (std::size_t p = group.begin; p < group.end; ++p) sampled += kTwoPi * s.particles.mass[p];
+  const double scale = d.mass_kg / sampled;
+  for (std::size_t p = group.begin; p < group.end; ++p) s.particles.mass[p] *= scale;
+  group.density_kg_m3 *= scale;
+  auto settings = penetrometer_settings<DeformablePenetrometerSettings>(d);
+  settings.body = 1;
+  settings.subcycle = subcycles(s, group, d.subcycle);
+  return std::make_unique<DeformablePenetrometer>(s, settings);
+}
+
+/// The PIC share of a step scaled to its length, before update_particles (PicBlend).
+void insert_pic_blend(Simulation& s, PicBlend blend, double soil_dt_s, double c_p, double speed_m_s) {
+  if (blend == PicBlend::per_step || s.settings.flip_fraction >= 1.0) return;
+  // The share of a step is (1 − α)·Δt/Δt_ref. per_soil_step: Δt_ref is this mesh's soil step, and a step
+  // takes at most 1 − α. per_second: Δt_ref is the 1 cm mesh's, so the share per step falls with Δt ∝ h
+  // and every mesh damps at the same rate per second (per_soil_step's rate grows as 1/h: twice the PIC
+  // per second at each halving); a coarse mesh's long step may take more than 1 − α, up to all of it.
+  const double pic = 1.0 - s.settings.flip_fraction;
+  const bool per_second = blend == PicBlend::per_second;
+  const double reference_dt_s = per_second ? 0.5 * kPicReferenceCell_m / (c_p + speed_m_s) : soil_dt_s;
+  s.stages.insert_before("update_particles", {"scale_pic_blend", [pic, per_second, reference_dt_s](Simulation& sim) {
+                                                sim.settings.flip_fraction =
+                                                    per_second ? 1.0 - std::min(1.0, pic * sim.dt_s / reference_dt_s)
+                                                               : 1.0 - pic * std::min(1.0, sim.dt_s / reference_dt_s);
+                                              }});
+}
+
+}  // namespace
+
 FfpRun::FfpRun(const FfpDescription& d)
     : description_(d),
       geometry_(d.shape),
@@ -186,58 +255,16 @@ FfpRun::FfpRun(const FfpDescription& d)
       simulation_(build_model(d, layout_, geometry_)) {
   Simulation& s = simulation_;
   if (d.deformable) {
-    if (d.prescribed) throw std::invalid_argument("a prescribed (CPT) penetrometer is rigid");
-    if (d.project_particles) throw std::invalid_argument("the particle projection is for a rigid penetrometer");
-    if (d.surface != ContactSurface::nodes)
-      throw std::invalid_argument("the particles' contact surface is for a rigid penetrometer");
-    // Own nodal field for the penetrometer (two-body contact), and the exact mass.
-    s.grid.fields.resize(2);
-    s.grid.fields[1].resize(s.grid.nodes());
-    s.bodies[1].field = 1;
-    MaterialGroup& group = s.groups[1];
-    double sampled = 0.0;
-    for (std::size_t p = group.begin; p < group.end; ++p) sampled += kTwoPi * s.particles.mass[p];
-    const double scale = d.mass_kg / sampled;
-    for (std::size_t p = group.begin; p < group.end; ++p) s.particles.mass[p] *= scale;
-    group.density_kg_m3 *= scale;
-    DeformablePenetrometerSettings settings;
-    settings.shape = d.shape;
-    settings.tip_z_m = 0.0;
-    settings.body = 1;
-    settings.contact = d.contact;
-    settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
-    if (d.subcycle == Subcycle::automatic) {
-      // The soil's limit: the step's CFL without the body's p-wave (its speed still counts).
-      s.main_step_end = group.begin;
-      const double soil_limit = cfl_time_step_limit(s);
-      s.main_step_end = s.particles.size();
-      settings.subcycle = soil_limit >= kSubcycleRatio * group_time_step_limit(s, group);
-    } else {
-      settings.subcycle = d.subcycle == Subcycle::on;
-    }
-    deformable_ = std::make_unique<DeformablePenetrometer>(s, settings);
+    deformable_ = make_deformable(s, d);
     deformable_->attach(s);
-    s.dt_limit_s = cfl_time_step_limit(s);
-    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   } else {
-    RigidPenetrometerSettings settings;
-    settings.shape = d.shape;
-    settings.mass_kg = d.mass_kg;
-    settings.tip_z_m = 0.0;
-    settings.velocity_m_s = d.velocity_m_s;
-    settings.motion = d.prescribed ? RigidMotion::prescribed : RigidMotion::free;
-    settings.force = d.force;
-    settings.external_force_N = d.external_force_N;
-    settings.contact = d.contact;
-    settings.surface = d.surface;
-    settings.detection_distance_m = d.detection_cells * d.mesh.min_cell_m;
-    settings.project_particles = d.project_particles;
-    rigid_ = std::make_unique<RigidPenetrometer>(settings);
+    rigid_ = std::make_unique<RigidPenetrometer>(rigid_settings(d));
     rigid_->attach(s);
     s.rigid_speed_m_s = std::abs(d.velocity_m_s);
-    s.dt_limit_s = cfl_time_step_limit(s);
-    if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   }
+  // The first step: the CFL step of the model with the penetrometer attached.
+  s.dt_limit_s = cfl_time_step_limit(s);
+  if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last,
                          {"move_mesh", [this](Simulation& sim) { mesh_.apply(sim.grid, state().displacement_m); }});
@@ -247,21 +274,7 @@ FfpRun::FfpRun(const FfpDescription& d)
   // At the project's standard Courant number 0.5, so that the damping per unit time does not
   // follow the Courant number either.
   soil_dt_s_ = 0.5 * s.grid.min_spacing() / (c_p + std::abs(d.velocity_m_s));
-  if (d.pic_blend != PicBlend::per_step && s.settings.flip_fraction < 1.0) {
-    // The share of a step is (1 − α)·Δt/Δt_ref. per_soil_step: Δt_ref is this mesh's soil step, and a step
-    // takes at most 1 − α. per_second: Δt_ref is the 1 cm mesh's, so the share per step falls with Δt ∝ h
-    // and every mesh damps at the same rate per second (per_soil_step's rate grows as 1/h: twice the PIC
-    // per second at each halving); a coarse mesh's long step may take more than 1 − α, up to all of it.
-    const double pic = 1.0 - s.settings.flip_fraction;
-    const bool per_second = d.pic_blend == PicBlend::per_second;
-    const double reference_dt_s =
-        per_second ? 0.5 * kPicReferenceCell_m / (c_p + std::abs(d.velocity_m_s)) : soil_dt_s_;
-    s.stages.insert_before("update_particles", {"scale_pic_blend", [pic, per_second, reference_dt_s](Simulation& sim) {
-                                                  sim.settings.flip_fraction =
-                                                      per_second ? 1.0 - std::min(1.0, pic * sim.dt_s / reference_dt_s)
-                                                                 : 1.0 - pic * std::min(1.0, sim.dt_s / reference_dt_s);
-                                                }});
-  }
+  insert_pic_blend(s, d.pic_blend, soil_dt_s_, c_p, std::abs(d.velocity_m_s));
 }
 
 double FfpRun::soil_intrusion_m() const {

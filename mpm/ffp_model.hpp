@@ -155,7 +155,9 @@ struct FfpGridLayout {
   int base_row = 0;
 };
 
-/// Throws std::invalid_argument for sizes that do not fit together.
+/// The description's sizes in their ranges and fitting together is the scene reader's to
+/// check (drivers/app/ffp_scene.cpp; asserted here). Throws std::invalid_argument where
+/// the layout itself finds no room (an edge offset whose cells overrun the chamber).
 FfpGridLayout ffp_grid_layout(const FfpDescription& description);
 
 /// Nodes and particles of FfpRun(description) before it is built (see estimate_model_size).
@@ -163,7 +165,8 @@ ModelSize estimate_ffp_size(const FfpDescription& description, double budget_byt
 
 class FfpRun {
  public:
-  /// Throws std::invalid_argument for an inconsistent description.
+  /// A description the scene reader has checked (see ffp_grid_layout); throws
+  /// std::invalid_argument where the model finds it does not fit.
   explicit FfpRun(const FfpDescription& description);
   FfpRun(const FfpRun&) = delete;
   FfpRun& operator=(const FfpRun&) = delete;

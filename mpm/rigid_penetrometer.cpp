@@ -63,44 +63,53 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
   }
 }
 
-double RigidPenetrometer::soil_impulse(Simulation& s, double v, bool write, std::size_t* corrected) {
-  NodalField& f = s.grid.fields[settings_.soil_field];
+const RigidPenetrometer::SoilExchange& RigidPenetrometer::exchange_with_soil(const Simulation& s, double v) {
+  const NodalField& f = s.grid.fields[settings_.soil_field];
   const double dt_over_h = s.dt_s / s.grid.min_spacing();
-  double sum = 0.0, cone = 0.0, cone_normal = 0.0, shaft = 0.0;
-  std::size_t count = 0;
+  SoilExchange out;
+  soil_after_.resize(nodes_.size());
   for (std::size_t c = 0; c < nodes_.size(); ++c) {
     const std::size_t k = nodes_[c].node;
     const Vector2 n = nodes_[c].normal;
     const Vector2 before = soil_star_[c];
     const Vector2 after = contact_velocity(before, {0.0, v}, n, settings_.contact, dt_over_h);
+    soil_after_[c] = after;
     const double dp_z = f.mass[k] * (after.z - before.z);
-    sum += dp_z;
-    if (after.r != before.r || after.z != before.z) ++count;
-    if (write) {
-      f.velocity_new_r[k] = after.r;
-      f.velocity_new_z[k] = after.z;
-      // The split of the same impulse: cone (n_z < 0) or shaft (n_z = 0), and the
-      // cone's normal part (Δp·n) n_z, the rest of its z impulse being friction.
-      if (n.z < 0.0) {
-        cone += dp_z;
-        cone_normal += f.mass[k] * ((after.r - before.r) * n.r + (after.z - before.z) * n.z) * n.z;
-      } else if (n.z == 0.0) {
-        shaft += dp_z;
-      }
+    out.impulse_z += dp_z;
+    if (after.r != before.r || after.z != before.z) ++out.corrected;
+    // The split of the same impulse: cone (n_z < 0) or shaft (n_z = 0), and the
+    // cone's normal part (Δp·n) n_z, the rest of its z impulse being friction.
+    if (n.z < 0.0) {
+      out.cone += dp_z;
+      out.cone_normal += f.mass[k] * ((after.r - before.r) * n.r + (after.z - before.z) * n.z) * n.z;
+    } else if (n.z == 0.0) {
+      out.shaft += dp_z;
     }
   }
-  if (write) {
-    state_.cone_impulse_N_s -= kTwoPi * cone;
-    state_.cone_normal_impulse_N_s -= kTwoPi * cone_normal;
-    state_.shaft_impulse_N_s -= kTwoPi * shaft;
+  exchange_ = out;
+  return exchange_;
+}
+
+double RigidPenetrometer::correct_soil(Simulation& s, double v) {
+  exchange_with_soil(s, v);
+  NodalField& f = s.grid.fields[settings_.soil_field];
+  for (std::size_t c = 0; c < nodes_.size(); ++c) {
+    f.velocity_new_r[nodes_[c].node] = soil_after_[c].r;
+    f.velocity_new_z[nodes_[c].node] = soil_after_[c].z;
   }
-  if (corrected != nullptr) *corrected = count;
-  return sum;
+  take_soil_impulse_split(exchange_.cone, exchange_.cone_normal, exchange_.shaft);
+  return exchange_.impulse_z;
+}
+
+void RigidPenetrometer::take_soil_impulse_split(double cone, double cone_normal, double shaft) {
+  state_.cone_impulse_N_s -= kTwoPi * cone;
+  state_.cone_normal_impulse_N_s -= kTwoPi * cone_normal;
+  state_.shaft_impulse_N_s -= kTwoPi * shaft;
 }
 
 double RigidPenetrometer::solve_free_velocity(Simulation& s, double v_free) {
   const double M = settings_.mass_kg / kTwoPi;  // per radian, as the nodal masses
-  auto residual = [&](double v) { return M * (v - v_free) + soil_impulse(s, v, false, nullptr); };
+  auto residual = [&](double v) { return M * (v - v_free) + exchange_with_soil(s, v).impulse_z; };
   double f_free = residual(v_free);
   if (f_free == 0.0) return v_free;
   // Bracket: the root is within |F(v_free)|/M' of v_free unless the soil's
@@ -151,9 +160,7 @@ void RigidPenetrometer::apply_particle_contact(Simulation& s) {
   state_.impulse_N_s += reaction * dt;
   state_.contact_nodes = out.active;
   state_.contact_residual_m_s = out.residual_m_s;
-  state_.cone_impulse_N_s -= kTwoPi * out.cone_z;
-  state_.cone_normal_impulse_N_s -= kTwoPi * out.cone_normal_z;
-  state_.shaft_impulse_N_s -= kTwoPi * out.shaft_z;
+  take_soil_impulse_split(out.cone_z, out.cone_normal_z, out.shaft_z);
 }
 
 void RigidPenetrometer::apply_contact(Simulation& s) {
@@ -168,15 +175,13 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
   const double M = settings_.mass_kg;
   double v = v0;
   double reaction = 0.0;
-  std::size_t corrected = 0;
   if (settings_.motion == RigidMotion::prescribed) {
     v = settings_.velocity_m_s;
-    reaction = -kTwoPi * soil_impulse(s, v, true, &corrected) / dt;
+    reaction = -kTwoPi * correct_soil(s, v) / dt;
   } else if (settings_.force == RigidBodyForce::contact_impulse) {
     const double v_free = v0 + dt * (-g + settings_.external_force_N / M);
     v = solve_free_velocity(s, v_free);
-    const double impulse = soil_impulse(s, v, true, &corrected);  // per radian, exactly what the soil received
-    reaction = -kTwoPi * impulse / dt;
+    reaction = -kTwoPi * correct_soil(s, v) / dt;  // per radian, exactly what the soil received
     v = v_free + dt * reaction / M;  // the same impulse taken from the body (v equals the root to round-off)
   } else {
     // Eq. 1 verbatim: f_soil^i is the soil's nodal internal force at the contact nodes.
@@ -185,12 +190,12 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
     for (const ContactNode& c : nodes_) sum += f.internal_force_z[c.node];
     reaction = kTwoPi * sum;
     v = v0 + dt * (-g + (reaction + settings_.external_force_N) / M);  // eqs. 1 and 3
-    soil_impulse(s, v, true, &corrected);
+    correct_soil(s, v);
   }
   state_.velocity_m_s = v;
   state_.reaction_N = reaction;
   state_.impulse_N_s += reaction * dt;
-  state_.contact_nodes = corrected;
+  state_.contact_nodes = exchange_.corrected;
 }
 
 void RigidPenetrometer::apply_contact_remapped(Simulation& s) {

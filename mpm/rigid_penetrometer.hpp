@@ -115,9 +115,6 @@ class RigidPenetrometer {
   /// Soil particles inside the outline (at the body's new position) onto it, along its normal.
   void project_particles(Simulation& simulation);
 
-  /// A prescribed body's velocity from the next step on (e.g. to hold it still).
-  void set_prescribed_velocity(double velocity_m_s) { settings_.velocity_m_s = velocity_m_s; }
-
   const PenetrometerState& state() const { return state_; }
   double tip_z_m() const { return tip_z_; }
   const PenetrometerGeometry& geometry() const { return geometry_; }
@@ -129,9 +126,22 @@ class RigidPenetrometer {
   void find_nodes(const Simulation& simulation);
   /// ContactSurface::particles: the step's exchange on the updated grid velocities.
   void apply_particle_contact(Simulation& simulation);
-  /// Σ_i m_i (v_s,i(v) − v*_s,i)_z over the nodes (per radian), optionally writing v_s,i(v)
-  /// and adding the body's share of it (−2π × the soil's) to the state's cone/shaft impulses.
-  double soil_impulse(Simulation& simulation, double v, bool write, std::size_t* corrected);
+  /// What the soil receives from the contact law against a body moving at v (per radian):
+  /// Σ_i m_i (v_s,i(v) − v*_s,i)_z, its split (on the cone, n_z < 0, with the cone's normal
+  /// part (Δp·n) n_z; on the shaft, n_z = 0), and the nodes whose velocity the law changes.
+  struct SoilExchange {
+    double impulse_z = 0.0, cone = 0.0, cone_normal = 0.0, shaft = 0.0;
+    std::size_t corrected = 0;
+  };
+  /// The exchange against v into exchange_, and each node's v_s,i(v) into soil_after_;
+  /// nothing written to the grid (the residual of the free body's velocity tries many v).
+  const SoilExchange& exchange_with_soil(const Simulation& simulation, double v);
+  /// The exchange against v made final: v_s,i(v) to the soil's nodes and the body's share
+  /// of its split to the state. Returns the soil's z impulse (per radian).
+  double correct_soil(Simulation& simulation, double v);
+  /// The body's share (−2π × the soil's, per radian) of the soil's z impulse on the cone,
+  /// its normal part and on the shaft, added to the state.
+  void take_soil_impulse_split(double cone, double cone_normal, double shaft);
   double solve_free_velocity(Simulation& simulation, double v_free);
 
   RigidPenetrometerSettings settings_;
@@ -140,6 +150,8 @@ class RigidPenetrometer {
   PenetrometerState state_;
   std::vector<ContactNode> nodes_;
   std::vector<Vector2> soil_star_;    ///< v*_s at the nodes, before contact
+  std::vector<Vector2> soil_after_;   ///< v_s(v) at the nodes, of the last exchange
+  SoilExchange exchange_;             ///< the last exchange
   ParticleContact particle_contact_;  ///< ContactSurface::particles: this step's candidates
 };
 

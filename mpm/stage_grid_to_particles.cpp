@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "mpm/particle_update.hpp"
 #include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
@@ -13,20 +14,6 @@
 namespace ffp::mpm {
 
 namespace {
-
-/// Moves a particle to x + Δt·v, kept inside the walls (counted in `clamps`).
-inline void move_within_walls(Particles& P, std::size_t p, double r, double z, const Walls& walls, long& clamps) {
-  // Interpolation makes v_n → 0 at a wall, so particles approach it but never
-  // cross — unless Δt·|v_i| exceeds a cell at some node, which the CFL estimate
-  // does not bound. Keep them in, and count it.
-  if (r < walls.r_min || r > walls.r_max || z < walls.z_min || z > walls.z_max) {
-    r = std::clamp(r, walls.r_min, walls.r_max);
-    z = std::clamp(z, walls.z_min, walls.z_max);
-    ++clamps;
-  }
-  P.r[p] = r;
-  P.z[p] = z;
-}
 
 /// fn(node, S_ip) over the S×S support of a particle.
 template <int S, class Fn>
@@ -66,8 +53,7 @@ void update_particles_impl(Simulation& s) {
   // v_p ← α (v_p + Σ S Δv_i) + (1 − α) Σ S v_i^{n+1}, and x_p ← x_p + Δt Σ S v_i^{n+1} (Move),
   // from the particle's gathered sums v = Σ S v_i^{n+1} and dv = Σ S (v_i^{n+1} − v_i^n).
   auto blend_and_move = [&](std::size_t p, double v_r, double v_z, double dv_r, double dv_z) {
-    P.vr[p] = alpha * (P.vr[p] + dv_r) + (1.0 - alpha) * v_r;
-    P.vz[p] = alpha * (P.vz[p] + dv_z) + (1.0 - alpha) * v_z;
+    blend_flip_pic(P, p, alpha, v_r, v_z, dv_r, dv_z);
     if constexpr (Move) {
       long clamped = 0;
       move_within_walls(P, p, P.r[p] + dt * v_r, P.z[p] + dt * v_z, walls, clamped);
@@ -391,21 +377,9 @@ inline void strain_increment_of(const Grid& grid, const ShapeWeights& w, const d
     apply_velocity_gradient(sums.gradient(w.inverse_r), dt, de, spin_dt, volume);
     return;
   }
-  VelocityGradient L;
-  for (int b = 0; b < S; ++b) {  // a GIMP edge particle: node by node
-    const std::size_t row = grid.node(w.node_r, w.node_z + b);
-    for (int a = 0; a < S; ++a) {
-      const std::size_t i = row + static_cast<std::size_t>(a);
-      const double N = w.wr[a] * w.wz[b], Gr = w.gr[a] * w.wz[b], Gz = w.wr[a] * w.gz[b];
-      L.rr += vr[i] * Gr;
-      L.rz += vr[i] * Gz;
-      L.zr += vz[i] * Gr;
-      L.zz += vz[i] * Gz;
-      L.tt += vr[i] * N;
-    }
-  }
-  L.tt *= w.inverse_r;
-  apply_velocity_gradient(L, dt, de, spin_dt, volume);
+  // A GIMP edge particle: node by node.
+  const auto node = [&](int a, int b) { return grid.node(w.node_r, w.node_z + b) + static_cast<std::size_t>(a); };
+  apply_velocity_gradient(velocity_gradient<S>(w, node, vr, vz), dt, de, spin_dt, volume);
 }
 
 /// strain_increment_of for a GIMP cell's lower and upper particle (consecutive, the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "mpm/internal_force.hpp"
 #include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
 #include "mpm/support_row.hpp"
@@ -39,12 +40,7 @@ void scatter_mass_momentum(Simulation& s) {
   s.bins.scatter([&](std::size_t p) { add_mass_momentum<S>(s, p, s.grid.fields[s.bodies[P.body[p]].field]); });
 }
 
-/// The components of σ_p the internal force takes (rr, zz, θθ, rz): with strain
-/// smoothing, its cell's mean stress. Four doubles rather than a Voigt copy, which
-/// the scatter loops kept on the stack.
-struct ForceStress {
-  double rr, zz, tt, rz;
-};
+/// The components of σ_p the internal force takes: with strain smoothing, its cell's mean stress.
 inline ForceStress particle_force_stress(const Simulation& s, std::size_t p, StrainSmoothing smoothing,
                                          const std::vector<double>& limit) {
   const Particles& P = s.particles;
@@ -55,25 +51,19 @@ inline ForceStress particle_force_stress(const Simulation& s, std::size_t p, Str
       const Voigt& cell = s.cell_stress[k];  // the cell's whole mean stress (the transpose of Δε_p ← Δε̄_c)
       return {cell[0], cell[1], cell[2], cell[3]};
     }
-    // B-bar: the cell's mean stress stands in for the particle's
-    const double shift = s.cell_mean_stress[k] - trace(own) / 3.0;
-    return {own[0] + shift, own[1] + shift, own[2] + shift, own[3]};
+    return b_bar_force_stress(own, s.cell_mean_stress[k]);
   }
-  return {own[0], own[1], own[2], own[3]};
+  return own_force_stress(own);
 }
 
 /// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] for one particle.
 template <int S>
-inline void add_internal_force(Simulation& s, std::size_t p, NodalField& f, StrainSmoothing smoothing,
-                               const std::vector<double>& limit) {
-  const Particles& P = s.particles;
+inline void add_particle_internal_force(Simulation& s, std::size_t p, NodalField& f, StrainSmoothing smoothing,
+                                        const std::vector<double>& limit) {
   const ShapeWeights& w = s.weights[p];
-  const ForceStress sig = particle_force_stress(s, p, smoothing, limit);
-  const double V = P.volume[p], hoop = sig.tt * w.inverse_r;
-  for_support<S>(s.grid, w, [&](std::size_t i, double N, double Gr, double Gz) {
-    f.internal_force_r[i] -= V * (sig.rr * Gr + sig.rz * Gz + hoop * N);
-    f.internal_force_z[i] -= V * (sig.rz * Gr + sig.zz * Gz);
-  });
+  const auto node = [&](int a, int b) { return s.grid.node(w.node_r, w.node_z + b) + static_cast<std::size_t>(a); };
+  add_internal_force<S>(w, particle_force_stress(s, p, smoothing, limit), s.particles.volume[p], node,
+                        f.internal_force_r.data(), f.internal_force_z.data());
 }
 
 template <int S>
@@ -82,7 +72,7 @@ void scatter_internal_forces(Simulation& s) {
   const bool smoothed = smoothing != StrainSmoothing::off;
   const std::vector<double> limit = smoothed ? cell_mean_density_limits(s) : std::vector<double>{};
   s.bins.scatter([&](std::size_t p) {
-    add_internal_force<S>(s, p, s.grid.fields[s.bodies[s.particles.body[p]].field], smoothing, limit);
+    add_particle_internal_force<S>(s, p, s.grid.fields[s.bodies[s.particles.body[p]].field], smoothing, limit);
   });
 }
 

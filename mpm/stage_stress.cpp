@@ -7,6 +7,7 @@
 #include "mpm/parallel.hpp"
 #include "mpm/prefetch.hpp"
 #include "mpm/stages.hpp"
+#include "mpm/velocity_gradient.hpp"
 
 namespace ffp::mpm {
 
@@ -213,10 +214,8 @@ struct alignas(64) ThreadSignal {
 
 }  // namespace
 
-// Jaumann rate (objective for large rotations), before the law:
-//   σ ← σ + ΔW σ − σ ΔW,  ΔW = [[0, w], [−w, 0]] in (r, z), w = W_rz Δt:
-//   σ_rr += 2wσ_rz,  σ_zz −= 2wσ_rz,  σ_rz += w(σ_zz − σ_rr);  σ_θθ unchanged.
-// Then σ ← law(σ, Δε) for each material group, one batch call per chunk, and
+// Jaumann rate (objective for large rotations) before the law (rotate_by_spin,
+// mpm/velocity_gradient.hpp). Then σ ← law(σ, Δε) for each material group, one batch call per chunk, and
 // σ ← 0 where a granular particle has lost grain contact (ρ_p below the group's limit);
 // then, if the time step follows, the batch's CFL maxima (Simulation::stressed_signal).
 void update_stresses(Simulation& s) {
@@ -237,12 +236,7 @@ void update_stresses(Simulation& s) {
         g.begin, g.end, s.particles.size(), chunk, g.size() >= kParallelMinimum,
         [&](std::size_t first, std::size_t last) {
           for (std::size_t p = first; p < last; ++p) {
-            Voigt& sig = stress[p];
-            const double w = s.spin_dt[p];
-            const double rr = sig[0], zz = sig[1], rz = sig[3];
-            sig[0] = rr + 2.0 * w * rz;
-            sig[1] = zz - 2.0 * w * rz;
-            sig[3] = rz + w * (zz - rr);
+            rotate_by_spin(stress[p], s.spin_dt[p]);
             strain[p] += s.strain_increment[p];  // after smoothing: the strain the law sees
           }
           g.update(first, last, stress, s.strain_increment, s.dt_s);

@@ -11,8 +11,6 @@ void Markdown::heading(int level, const std::string& text) {
 
 void Markdown::paragraph(const std::string& text) { out_ << text << "\n\n"; }
 
-void Markdown::bullet(const std::string& text) { out_ << "- " << text << "\n"; }
-
 void Markdown::table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
   out_ << "|";
   for (const auto& h : header) out_ << " " << h << " |";

@@ -11,7 +11,6 @@ class Markdown {
  public:
   void heading(int level, const std::string& text);
   void paragraph(const std::string& text);
-  void bullet(const std::string& text);
   void table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
   /// An image; `png` is made relative to the document's folder by the caller.
   void figure(const std::string& relative_png, const std::string& caption);

@@ -262,6 +262,8 @@ void read_mesh(SceneReader& scene, mpm::FfpDescription& d) {
                "must be at most mesh.min_cell_m (" + std::to_string(h) + " m): at least one particle per cell");
   if (d.shape.base_radius_m + h > d.soil.radius_m)
     m.fail("min_cell_m", "leaves no cell between the penetrometer and the chamber wall");
+  if (d.shape.total_length_m() < 3.0 * h)
+    m.fail("min_cell_m", "must be at most a third of the penetrometer's length (its cone and ffp.body_length_m)");
   if (mesh.band_below_m + 2.0 * h >= d.soil.depth_m)
     m.fail("band_below_m", "must leave at least two cells of sand below the moving band (soil.depth_m)");
   m.finish(

@@ -240,6 +240,19 @@ TEST_CASE("ffp reader: the reference drop and its bad keys", "[app][scene][ffp]"
         "ffp.rigid_body_force: applies to a rigid penetrometer only (this one is deformable)");
 }
 
+TEST_CASE("ffp reader: the mesh's offsets lie within a cell and the body spans three cells", "[app][scene][ffp]") {
+  // The reader is the one place of these ranges (mpm's ffp_grid_layout only asserts them).
+  CHECK(scene_error([] { ffp_scene("ffp_reference", PenetrometerKind::ffp, {"mesh.tip_offset_cells=1"}); }) ==
+        "mesh.tip_offset_cells: = 1 is out of range: must be ≥ 0 and < 1 cells");
+  CHECK(scene_error([] { ffp_scene("ffp_reference", PenetrometerKind::ffp, {"mesh.edge_offset_cells=1"}); }) ==
+        "mesh.edge_offset_cells: = 1 is out of range: must be ≥ 0 and < 1 cells");
+  CHECK(scene_error([] {
+          ffp_scene("ffp_reference", PenetrometerKind::ffp, {"ffp.body_length_m=0", "mesh.min_cell_m=0.03"});
+        }) == "mesh.min_cell_m: must be at most a third of the penetrometer's length (its cone and ffp.body_length_m)");
+  CHECK(ffp_scene("ffp_reference", PenetrometerKind::ffp, {"ffp.body_length_m=0", "mesh.min_cell_m=0.02"})
+            .model.mesh.min_cell_m == 0.02);  // the cone alone, 7.6 cm, spans three 2 cm cells
+}
+
 TEST_CASE("record reader: the reference record and its bad keys", "[app][scene][record]") {
   const RecordScene r = record_scene();
   CHECK(r.record_csv.filename() == "ffp_reference_synthetic.csv");
