@@ -66,6 +66,32 @@ class ParticleContact {
     double gap_m;
   };
   std::vector<Candidate> candidates_;
+  /// A candidate's support: its nodes, S_ip and S_ip/m_i per free component, and Σ S_ip²/m_i
+  /// over the nodes free in r and in z (its inverse mass in each direction).
+  struct Support {
+    std::size_t node[9];
+    double weight[9], weight_over_mass_r[9], weight_over_mass_z[9];
+    int count = 0;
+    double inverse_mass_r = 0.0, inverse_mass_z = 0.0;
+  };
+  std::vector<Support> supports_;                         ///< per candidate, this solve
+  std::vector<double> normal_impulse_, tangent_impulse_;  ///< per candidate, this solve
+  /// One solve's velocities: the soil's nodal ones (written) and the body's.
+  struct Exchange {
+    double* vr;
+    double* vz;
+    double v_body;
+    double body_inverse_mass;
+    const ContactLaw& law;
+    double dt;
+  };
+  void build_supports(const Simulation& s, const NodalField& soil);
+  static void apply(Exchange& exchange, const Support& support, double jr, double jz);
+  void start_from_last_impulses(Exchange& exchange, std::size_t particles);
+  double update(Exchange& exchange, std::size_t candidate);
+  void sweep(Exchange& exchange, ParticleContactOutcome& out, double tolerance);
+  void keep_impulses(double dt);
+  void tally(ParticleContactOutcome& out) const;
   /// Last warm-started solve's impulses per particle (normal, tangent) and its step.
   std::vector<double> last_normal_, last_tangent_;
   std::vector<std::size_t> last_particles_;  ///< the particles whose last_* entries are set

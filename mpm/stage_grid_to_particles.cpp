@@ -41,6 +41,207 @@ struct StackedPairRows {
   std::size_t row(int r) const { return first + stride * static_cast<std::size_t>(r); }
 };
 
+/// Remap: v_i^{n+1} − v_i^n once per node, in place of v_i^n, which map_velocities_to_grid
+/// overwrites next with the remapped field: each particle's Δv then reads one nodal array
+/// instead of two (the same differences, so the same bits). And the momenta zeroed for the
+/// remap's sums.
+void store_velocity_changes(Simulation& s) {
+  for (NodalField& f : s.grid.fields) {
+    const std::size_t nodes = f.size();
+    FFP_OMP(omp parallel for schedule(static) if (nodes >= kParallelMinimum))
+    for (std::size_t i = 0; i < nodes; ++i) {
+      f.velocity_r[i] = f.velocity_new_r[i] - f.velocity_r[i];
+      f.velocity_z[i] = f.velocity_new_z[i] - f.velocity_z[i];
+    }
+    std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
+    std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
+  }
+}
+
+/// Remap, linear hats: each strip's particles gathered, blended and moved (blend_and_move),
+/// and their momenta summed onto the nodes.
+template <class BlendAndMove>
+void remap_linear_strips(Simulation& s, BlendAndMove& blend_and_move) {
+  Particles& P = s.particles;
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
+  using Vec = SupportRow<2>;
+  s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
+    // Linear hats: the remap's momentum sums of a run of particles in one cell in
+    // registers, as in scatter_linear_strip (stage_particles_to_grid.cpp): loaded
+    // at the run's first particle, stored after its last, the same terms in the
+    // same order (the same bits). The run's nodal velocities are read once too.
+    constexpr int kNone = -1;
+    int run_field = kNone;
+    std::size_t run_node = 0;
+    double *momentum_r = nullptr, *momentum_z = nullptr;
+    Vec sum_r[2] = {}, sum_z[2] = {};
+    Vec new_r[2] = {}, new_z[2] = {}, change_r[2] = {}, change_z[2] = {};  // the run's gathered rows
+    const auto nodes_r = static_cast<std::size_t>(s.grid.r.nodes());
+    auto store_run = [&] {
+      for (int b = 0; b < 2; ++b) {
+        store_support_row<2>(momentum_r + run_node + nodes_r * b, sum_r[b]);
+        store_support_row<2>(momentum_z + run_node + nodes_r * b, sum_z[b]);
+      }
+    };
+    const Prefetch prefetch(P.size());
+    for (std::size_t k = 0; k < particles.size(); ++k) {
+      prefetch.ahead(s.weights.data(), particles, k);
+      const std::uint32_t p = particles[k];
+      const int field = s.bodies[P.body[p]].field;
+      NodalField& f = s.grid.fields[static_cast<std::size_t>(field)];
+      const ShapeWeights& w = s.weights[p];
+      const Vec wr = load_support_row<2>(w.wr);
+      const Vec N[2] = {wr * w.wz[0], wr * w.wz[1]};
+      const std::size_t node[2] = {s.grid.node(w.node_r, w.node_z), s.grid.node(w.node_r, w.node_z + 1)};
+      if (field != run_field || node[0] != run_node) {
+        if (run_field != kNone) store_run();
+        run_field = field;
+        run_node = node[0];
+        momentum_r = f.momentum_r.data();
+        momentum_z = f.momentum_z.data();
+        for (int b = 0; b < 2; ++b) {
+          sum_r[b] = load_support_row<2>(momentum_r + node[b]);
+          sum_z[b] = load_support_row<2>(momentum_z + node[b]);
+          new_r[b] = load_support_row<2>(&f.velocity_new_r[node[b]]);
+          new_z[b] = load_support_row<2>(&f.velocity_new_z[node[b]]);
+          change_r[b] = load_support_row<2>(&f.velocity_r[node[b]]);  // v_i^{n+1} − v_i^n (below)
+          change_z[b] = load_support_row<2>(&f.velocity_z[node[b]]);
+        }
+      }
+      if (p < n) {  // gather_by_rows, from the run's rows
+        Vec vr{}, vz{}, dvr{}, dvz{};
+        for (int b = 0; b < 2; ++b) {
+          vr += N[b] * new_r[b];
+          vz += N[b] * new_z[b];
+          dvr += N[b] * change_r[b];
+          dvz += N[b] * change_z[b];
+        }
+        blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
+      }
+      const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
+      for (int b = 0; b < 2; ++b) {
+        sum_r[b] = sum_r[b] + N[b] * pr;
+        sum_z[b] = sum_z[b] + N[b] * pz;
+      }
+    }
+    if (run_field != kNone) store_run();
+  });
+}
+
+/// Remap, GIMP: each strip's particles by stacked pairs where they are, else one by one (update).
+template <int S, class BlendAndMove, class Update>
+void remap_gimp_strips(Simulation& s, BlendAndMove& blend_and_move, Update& update) {
+  Particles& P = s.particles;
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
+  using Vec = SupportRow<S>;
+  // GIMP: a cell's lower and upper particle (consecutive, as seeded: the same
+  // support columns, the upper one node row up) as a pair. Their four node rows
+  // are read once per nodal array, and the remap adds to each once, the lower's
+  // term before the upper's, as one by one (the same bits). Array by array, so
+  // that only that array's sums are live.
+  auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w,
+                         const ShapeWeights& v) {
+    const StackedPairRows N(s.grid, w, v);
+    auto gather = [&](const double* x, Vec& sum_p, Vec& sum_q) {
+      for (int row = 0; row < S + 1; ++row) {
+        const Vec at = load_support_row<S>(x + N.row(row));
+        if (row < S) sum_p += N.lower[row] * at;
+        if (row > 0) sum_q += N.upper[row - 1] * at;
+      }
+    };
+    Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
+    gather(f.velocity_new_r.data(), vr_p, vr_q);
+    gather(f.velocity_new_z.data(), vz_p, vz_q);
+    gather(f.velocity_r.data(), dvr_p, dvr_q);  // v_i^{n+1} − v_i^n (below)
+    gather(f.velocity_z.data(), dvz_p, dvz_q);
+    blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
+    blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
+    auto remap = [&](double* x, double momentum_p, double momentum_q) {
+      for (int row = 0; row < S + 1; ++row) {
+        double* at = x + N.row(row);
+        Vec sum = load_support_row<S>(at);
+        if (row < S) sum = sum + N.lower[row] * momentum_p;
+        if (row > 0) sum = sum + N.upper[row - 1] * momentum_q;
+        store_support_row<S>(at, sum);
+      }
+    };
+    remap(f.momentum_r.data(), P.mass[p] * P.vr[p], P.mass[q] * P.vr[q]);
+    remap(f.momentum_z.data(), P.mass[p] * P.vz[p], P.mass[q] * P.vz[q]);
+  };
+  s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
+    const Prefetch prefetch(P.size());
+    for (std::size_t k = 0; k < particles.size();) {
+      prefetch.ahead(s.weights.data(), particles, k);  // and the next: a pair takes two
+      prefetch.ahead(s.weights.data(), particles, k + 1);
+      const std::size_t p = particles[k];
+      const ShapeWeights& w = s.weights[p];
+      if (k + 1 < particles.size() && p < n && rows_fit<S>(s.grid, w)) {
+        const std::size_t q = particles[k + 1];
+        const ShapeWeights& v = s.weights[q];
+        const std::uint8_t field = s.bodies[P.body[p]].field;
+        if (q < n && stacked_pair(w, v) && s.bodies[P.body[q]].field == field) {
+          update_pair(p, q, s.grid.fields[field], w, v);
+          k += 2;
+          continue;
+        }
+      }
+      update(p);
+      ++k;
+    }
+  });
+}
+
+/// No remap: each thread its own part's particles (mpm/particle_bins.hpp), GIMP's stacked
+/// pairs together, the others one by one (update).
+template <int S, class BlendAndMove, class Update>
+void gather_particles(Simulation& s, BlendAndMove& blend_and_move, Update& update) {
+  Particles& P = s.particles;
+  const std::size_t n = s.main_step_end;  // a subcycled body moves and strains in its own substeps
+  // GIMP: a cell's lower and upper particle (consecutive, as seeded) as a pair whose
+  // four node rows are read once for both, as in the remap above (the same bits).
+  auto gather_pair = [&](std::size_t p, std::size_t q, const NodalField& f, const ShapeWeights& w,
+                         const ShapeWeights& v) {
+    const StackedPairRows N(s.grid, w, v);
+    // Σ S v^{n+1} and Σ S (v^{n+1} − v^n) of one component for both particles.
+    auto gather = [&](const double* updated, const double* previous, Row& v_p, Row& dv_p, Row& v_q, Row& dv_q) {
+      for (int row = 0; row < 4; ++row) {
+        const std::size_t i = N.row(row);
+        const Row now = load_support_row<3>(updated + i), change = now - load_support_row<3>(previous + i);
+        if (row < 3) {
+          v_p += N.lower[row] * now;
+          dv_p += N.lower[row] * change;
+        }
+        if (row > 0) {
+          v_q += N.upper[row - 1] * now;
+          dv_q += N.upper[row - 1] * change;
+        }
+      }
+    };
+    Row vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
+    gather(f.velocity_new_r.data(), f.velocity_r.data(), vr_p, dvr_p, vr_q, dvr_q);
+    gather(f.velocity_new_z.data(), f.velocity_z.data(), vz_p, dvz_p, vz_q, dvz_q);
+    blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
+    blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
+  };
+  s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
+    for (std::size_t p = first; p < last; ++p) {
+      if constexpr (S == 3) {
+        const ShapeWeights& w = s.weights[p];
+        if (p + 1 < last && rows_fit<S>(s.grid, w)) {
+          const ShapeWeights& v = s.weights[p + 1];
+          const std::uint8_t field = s.bodies[P.body[p]].field;
+          if (stacked_pair(w, v) && s.bodies[P.body[p + 1]].field == field) {
+            gather_pair(p, p + 1, s.grid.fields[field], w, v);
+            ++p;
+            continue;
+          }
+        }
+      }
+      update(p);
+    }
+  });
+}
+
 /// Remap: also p_i += S_ip m_p v_p^{n+1} while the particle's weights are at hand
 /// (MUSL), in ParticleBins order, so every nodal sum keeps its one fixed order.
 template <int S, bool Move, bool Remap>
@@ -129,183 +330,15 @@ void update_particles_impl(Simulation& s) {
     }
   };
   if constexpr (Remap) {
-    // v_i^{n+1} − v_i^n once per node, in place of v_i^n, which map_velocities_to_grid
-    // overwrites next with the remapped field: each particle's Δv then reads one nodal
-    // array instead of two (the same differences, so the same bits).
-    for (NodalField& f : s.grid.fields) {
-      const std::size_t nodes = f.size();
-      FFP_OMP(omp parallel for schedule(static) if (nodes >= kParallelMinimum))
-      for (std::size_t i = 0; i < nodes; ++i) {
-        f.velocity_r[i] = f.velocity_new_r[i] - f.velocity_r[i];
-        f.velocity_z[i] = f.velocity_new_z[i] - f.velocity_z[i];
-      }
-      std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
-      std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
-    }
+    store_velocity_changes(s);
     if constexpr (S == 2) {
-      s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
-        // Linear hats: the remap's momentum sums of a run of particles in one cell in
-        // registers, as in scatter_linear_strip (stage_particles_to_grid.cpp): loaded
-        // at the run's first particle, stored after its last, the same terms in the
-        // same order (the same bits). The run's nodal velocities are read once too.
-        constexpr int kNone = -1;
-        int run_field = kNone;
-        std::size_t run_node = 0;
-        double *momentum_r = nullptr, *momentum_z = nullptr;
-        Vec sum_r[2] = {}, sum_z[2] = {};
-        Vec new_r[2] = {}, new_z[2] = {}, change_r[2] = {}, change_z[2] = {};  // the run's gathered rows
-        const auto nodes_r = static_cast<std::size_t>(s.grid.r.nodes());
-        auto store_run = [&] {
-          for (int b = 0; b < 2; ++b) {
-            store_support_row<2>(momentum_r + run_node + nodes_r * b, sum_r[b]);
-            store_support_row<2>(momentum_z + run_node + nodes_r * b, sum_z[b]);
-          }
-        };
-        const Prefetch prefetch(P.size());
-        for (std::size_t k = 0; k < particles.size(); ++k) {
-          prefetch.ahead(s.weights.data(), particles, k);
-          const std::uint32_t p = particles[k];
-          const int field = s.bodies[P.body[p]].field;
-          NodalField& f = s.grid.fields[static_cast<std::size_t>(field)];
-          const ShapeWeights& w = s.weights[p];
-          const Vec wr = load_support_row<2>(w.wr);
-          const Vec N[2] = {wr * w.wz[0], wr * w.wz[1]};
-          const std::size_t node[2] = {s.grid.node(w.node_r, w.node_z), s.grid.node(w.node_r, w.node_z + 1)};
-          if (field != run_field || node[0] != run_node) {
-            if (run_field != kNone) store_run();
-            run_field = field;
-            run_node = node[0];
-            momentum_r = f.momentum_r.data();
-            momentum_z = f.momentum_z.data();
-            for (int b = 0; b < 2; ++b) {
-              sum_r[b] = load_support_row<2>(momentum_r + node[b]);
-              sum_z[b] = load_support_row<2>(momentum_z + node[b]);
-              new_r[b] = load_support_row<2>(&f.velocity_new_r[node[b]]);
-              new_z[b] = load_support_row<2>(&f.velocity_new_z[node[b]]);
-              change_r[b] = load_support_row<2>(&f.velocity_r[node[b]]);  // v_i^{n+1} − v_i^n (below)
-              change_z[b] = load_support_row<2>(&f.velocity_z[node[b]]);
-            }
-          }
-          if (p < n) {  // gather_by_rows, from the run's rows
-            Vec vr{}, vz{}, dvr{}, dvz{};
-            for (int b = 0; b < 2; ++b) {
-              vr += N[b] * new_r[b];
-              vz += N[b] * new_z[b];
-              dvr += N[b] * change_r[b];
-              dvz += N[b] * change_z[b];
-            }
-            blend_and_move(p, row_sum(vr), row_sum(vz), row_sum(dvr), row_sum(dvz));
-          }
-          const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
-          for (int b = 0; b < 2; ++b) {
-            sum_r[b] = sum_r[b] + N[b] * pr;
-            sum_z[b] = sum_z[b] + N[b] * pz;
-          }
-        }
-        if (run_field != kNone) store_run();
-      });
+      remap_linear_strips(s, blend_and_move);
     } else {
-      // GIMP: a cell's lower and upper particle (consecutive, as seeded: the same
-      // support columns, the upper one node row up) as a pair. Their four node rows
-      // are read once per nodal array, and the remap adds to each once, the lower's
-      // term before the upper's, as one by one (the same bits). Array by array, so
-      // that only that array's sums are live.
-      auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w,
-                             const ShapeWeights& v) {
-        const StackedPairRows N(s.grid, w, v);
-        auto gather = [&](const double* x, Vec& sum_p, Vec& sum_q) {
-          for (int row = 0; row < S + 1; ++row) {
-            const Vec at = load_support_row<S>(x + N.row(row));
-            if (row < S) sum_p += N.lower[row] * at;
-            if (row > 0) sum_q += N.upper[row - 1] * at;
-          }
-        };
-        Vec vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
-        gather(f.velocity_new_r.data(), vr_p, vr_q);
-        gather(f.velocity_new_z.data(), vz_p, vz_q);
-        gather(f.velocity_r.data(), dvr_p, dvr_q);  // v_i^{n+1} − v_i^n (below)
-        gather(f.velocity_z.data(), dvz_p, dvz_q);
-        blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
-        blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
-        auto remap = [&](double* x, double momentum_p, double momentum_q) {
-          for (int row = 0; row < S + 1; ++row) {
-            double* at = x + N.row(row);
-            Vec sum = load_support_row<S>(at);
-            if (row < S) sum = sum + N.lower[row] * momentum_p;
-            if (row > 0) sum = sum + N.upper[row - 1] * momentum_q;
-            store_support_row<S>(at, sum);
-          }
-        };
-        remap(f.momentum_r.data(), P.mass[p] * P.vr[p], P.mass[q] * P.vr[q]);
-        remap(f.momentum_z.data(), P.mass[p] * P.vz[p], P.mass[q] * P.vz[q]);
-      };
-      s.bins.scatter_strips([&](int, std::span<const std::uint32_t> particles) {
-        const Prefetch prefetch(P.size());
-        for (std::size_t k = 0; k < particles.size();) {
-          prefetch.ahead(s.weights.data(), particles, k);  // and the next: a pair takes two
-          prefetch.ahead(s.weights.data(), particles, k + 1);
-          const std::size_t p = particles[k];
-          const ShapeWeights& w = s.weights[p];
-          if (k + 1 < particles.size() && p < n && rows_fit<S>(s.grid, w)) {
-            const std::size_t q = particles[k + 1];
-            const ShapeWeights& v = s.weights[q];
-            const std::uint8_t field = s.bodies[P.body[p]].field;
-            if (q < n && stacked_pair(w, v) && s.bodies[P.body[q]].field == field) {
-              update_pair(p, q, s.grid.fields[field], w, v);
-              k += 2;
-              continue;
-            }
-          }
-          update(p);
-          ++k;
-        }
-      });
+      remap_gimp_strips<S>(s, blend_and_move, update);
     }
     s.momentum_remapped = true;
-  } else {  // each thread its own part's particles (mpm/particle_bins.hpp)
-    // GIMP: a cell's lower and upper particle (consecutive, as seeded) as a pair whose
-    // four node rows are read once for both, as in the remap above (the same bits).
-    auto gather_pair = [&](std::size_t p, std::size_t q, const NodalField& f, const ShapeWeights& w,
-                           const ShapeWeights& v) {
-      const StackedPairRows N(s.grid, w, v);
-      // Σ S v^{n+1} and Σ S (v^{n+1} − v^n) of one component for both particles.
-      auto gather = [&](const double* updated, const double* previous, Row& v_p, Row& dv_p, Row& v_q, Row& dv_q) {
-        for (int row = 0; row < 4; ++row) {
-          const std::size_t i = N.row(row);
-          const Row now = load_support_row<3>(updated + i), change = now - load_support_row<3>(previous + i);
-          if (row < 3) {
-            v_p += N.lower[row] * now;
-            dv_p += N.lower[row] * change;
-          }
-          if (row > 0) {
-            v_q += N.upper[row - 1] * now;
-            dv_q += N.upper[row - 1] * change;
-          }
-        }
-      };
-      Row vr_p{}, vz_p{}, dvr_p{}, dvz_p{}, vr_q{}, vz_q{}, dvr_q{}, dvz_q{};
-      gather(f.velocity_new_r.data(), f.velocity_r.data(), vr_p, dvr_p, vr_q, dvr_q);
-      gather(f.velocity_new_z.data(), f.velocity_z.data(), vz_p, dvz_p, vz_q, dvz_q);
-      blend_and_move(p, row_sum(vr_p), row_sum(vz_p), row_sum(dvr_p), row_sum(dvz_p));
-      blend_and_move(q, row_sum(vr_q), row_sum(vz_q), row_sum(dvr_q), row_sum(dvz_q));
-    };
-    s.bins.for_each_particle_range(0, n, P.size(), n >= kParallelMinimum, [&](std::size_t first, std::size_t last) {
-      for (std::size_t p = first; p < last; ++p) {
-        if constexpr (S == 3) {
-          const ShapeWeights& w = s.weights[p];
-          if (p + 1 < last && rows_fit<S>(s.grid, w)) {
-            const ShapeWeights& v = s.weights[p + 1];
-            const std::uint8_t field = s.bodies[P.body[p]].field;
-            if (stacked_pair(w, v) && s.bodies[P.body[p + 1]].field == field) {
-              gather_pair(p, p + 1, s.grid.fields[field], w, v);
-              ++p;
-              continue;
-            }
-          }
-        }
-        update(p);
-      }
-    });
+  } else {
+    gather_particles<S>(s, blend_and_move, update);
   }
   s.wall_clamps += clamps;
 }
