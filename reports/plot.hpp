@@ -12,8 +12,8 @@
 namespace ffp {
 
 struct Series {
-  std::vector<double> x;
-  std::vector<double> y;
+  std::vector<double> x{};
+  std::vector<double> y{};
   std::string title;
   std::string style = "lines";  ///< gnuplot style: "lines", "points", "linespoints", "lines dashtype 2", ...
 };

@@ -55,6 +55,134 @@ const Variant kVariants[] = {
       "ffp.push_velocity_m_s=0.0158"}},
 };
 
+/// Where each run sits in the study's results: the two punches' mesh series (kColumnsInside
+/// each, smooth first), then the variants (kVariants' order).
+std::size_t series_run(std::size_t punch, std::size_t level) { return punch * kColumnsInside.size() + level; }
+std::size_t variant_run(std::size_t variant) { return std::size(kPunches) * kColumnsInside.size() + variant; }
+
+void write_introduction(Markdown& md) {
+  md.paragraph(
+      "A rigid flat punch of radius R = 5 cm is pushed at 5 mm/s into a weightless Tresca soil (mohr_coulomb with "
+      "φ' = 0, c' = 10 kPa, G/c' = 3000, ν = 0.3): GIMP, MUSL, volumetric strain smoothing, 2×2 particles per cell, "
+      "the FFP's node contact on the nodes inside the outline. The exact limit mean pressures are 5.69 c' for a "
+      "smooth punch (Shield 1955) and 6.05 c' for a rough one (Eason & Shield 1960), small-strain answers. "
+      "bearing_factor is the mean pressure over the settlement window s/R = 0.004–0.006 (4–6 times the elastic "
+      "settlement at the limit load, Boussinesq's s/R = π(1 − ν) p/(4G) ≈ 0.1 %) divided by c', read from the exact "
+      "impulse. The radial cells put R midway between two node columns (R/h = n + ½), so that the constrained "
+      "columns' tributary widths tile the base exactly; the scenes use R/h = 15.5.");
+}
+
+/// Each punch at each mesh size: the table's rows, its pressure–settlement curves and its errors.
+struct MeshSeries {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<Series> curves;
+  Series errors[2];
+};
+
+MeshSeries mesh_series(const StudyResults& results) {
+  MeshSeries out;
+  for (std::size_t k = 0; k < 2; ++k) {
+    out.errors[k] = {.title = std::string(kPunches[k].label) + " punch", .style = "linespoints"};
+    for (std::size_t l = 0; l < kColumnsInside.size(); ++l) {
+      const std::size_t i = series_run(k, l);
+      const double h = cell_m(kColumnsInside[l]);
+      const double n = figure(results, i, "bearing_factor");
+      const double error = n / kPunches[k].exact - 1.0;
+      out.rows.push_back({kPunches[k].label, fixed(100 * h, 3), fixed(kPunchRadius_m / h, 1),
+                          fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
+                          fixed(figure(results, i, "wall_time_s"), 1), fixed(n, 3), fixed(kPunches[k].exact, 2),
+                          fixed(100 * error, 1)});
+      if (std::isfinite(error)) {
+        out.errors[k].x.push_back(h / kPunchRadius_m);
+        out.errors[k].y.push_back(std::abs(error));
+      }
+      const CsvData hist = results.history(i);
+      if (hist.has("mean_pressure_kPa")) {
+        Series c{.title = std::string(kPunches[k].label) + ", R/h = " + fixed(kPunchRadius_m / h, 1),
+                 .style = "lines"};
+        const auto& s = hist.column("penetration_m");
+        const auto& p = hist.column("mean_pressure_kPa");
+        for (std::size_t r = 0; r < s.size(); ++r) {
+          c.x.push_back(s[r] / kPunchRadius_m);
+          c.y.push_back(p[r] / 10.0);  // c' = 10 kPa in both scenes
+        }
+        out.curves.push_back(c);
+      }
+    }
+  }
+  return out;
+}
+
+// Richardson from the three finest levels (refinement ratios 1.9–2.0): the MPM's own h → 0 limit.
+// Adds each punch's row to `rows` and returns the limits in words.
+std::string add_limits(const StudyResults& results, std::vector<std::vector<std::string>>& rows) {
+  const std::size_t levels = kColumnsInside.size();
+  std::string limits;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double n1 = figure(results, series_run(k, levels - 3), "bearing_factor"),
+                 n2 = figure(results, series_run(k, levels - 2), "bearing_factor"),
+                 n3 = figure(results, series_run(k, levels - 1), "bearing_factor");
+    const Extrapolation e = richardson(n1, n2, n3);
+    rows.push_back({kPunches[k].label, "h → 0 (Richardson)", "–", "–", "–", "–", fixed(e.value, 3),
+                    fixed(kPunches[k].exact, 2), fixed(100 * (e.value / kPunches[k].exact - 1), 1)});
+    limits += std::string(k ? "; " : "") + kPunches[k].label + ": " + fixed(e.value, 3) + " against " +
+              fixed(kPunches[k].exact, 2) +
+              (std::isfinite(e.order) ? " (observed order " + fixed(e.order, 2) + ")"
+                                      : " (not extrapolated: the finest level, the sequence is not monotone)");
+  }
+  return limits;
+}
+
+// The variants against the scenes' settings at the same level.
+void write_variants(Markdown& md, const StudyResults& results) {
+  const auto level = std::find(kColumnsInside.begin(), kColumnsInside.end(), kVariantColumns);
+  const double reference =
+      figure(results, series_run(0, static_cast<std::size_t>(level - kColumnsInside.begin())), "bearing_factor");
+  std::vector<std::vector<std::string>> variants = {{"the scene (2×2, Courant 0.5, MUSL, 5 mm/s, G/c' = 3000)",
+                                                     fixed(reference, 3), "–",
+                                                     fixed(100 * (reference / kShieldSmooth - 1), 1)}};
+  for (std::size_t v = 0; v < std::size(kVariants); ++v) {
+    const double n = figure(results, variant_run(v), "bearing_factor");
+    variants.push_back({kVariants[v].label, fixed(n, 3), fixed(100 * (n / reference - 1), 1),
+                        fixed(100 * (n / kShieldSmooth - 1), 1)});
+  }
+  md.paragraph("The smooth punch at R/h = 7.5 with one setting changed at a time:");
+  md.table({"variant", "bearing factor", "change [%]", "error [%]"}, variants);
+  md.paragraph(
+      "Reading: both punches converge to their exact limits, from below and at first order in h (the punch edge "
+      "is a stress singularity on a node-based contact), so the scenes' mesh is within 3 % of them. The settings "
+      "rest on the variants, not on the exact values: the particle density, the time step under MUSL and the push "
+      "speed about 5 mm/s move the answer by less than half a per cent; USL's answer depends on its time step; and "
+      "a rigidity of a few hundred reads the plateau at a settlement that has already raised it (G/c' = 300 at "
+      "s/R = 0.04–0.06), while G/c' = 1000 and 3000, each with its window at 4–6 elastic settlements, agree.");
+}
+
+void write_figures(StudyOutput& out, const MeshSeries& series) {
+  Plot curves_plot{.title = "Pressure–settlement of the punches",
+                   .x_label = "settlement / radius s/R",
+                   .y_label = "mean pressure / c'",
+                   .series = series.curves,
+                   .key_position = "bottom right"};
+  curves_plot.series.push_back(
+      {{0.0, 0.006}, {kShieldSmooth, kShieldSmooth}, "Shield 1955 (smooth)", "lines dashtype 2"});
+  curves_plot.series.push_back(
+      {{0.0, 0.006}, {kEasonShieldRough, kEasonShieldRough}, "Eason & Shield 1960 (rough)", "lines dashtype 2"});
+  if (write_png(curves_plot, out.figures_dir / "punch_pressure_settlement.png"))
+    out.document.figure(out.figures_relative + "/punch_pressure_settlement.png",
+                        "Mean pressure over c' against settlement over radius, each punch at each mesh size, with "
+                        "the exact limits.");
+  const Plot error_plot{.title = "Bearing factor error against mesh size",
+                        .x_label = "h / R",
+                        .y_label = "|N − N_exact| / N_exact",
+                        .series = {series.errors[0], series.errors[1]},
+                        .log_x = true,
+                        .log_y = true,
+                        .key_position = "bottom right"};
+  if (write_png(error_plot, out.figures_dir / "punch_convergence.png"))
+    out.document.figure(out.figures_relative + "/punch_convergence.png",
+                        "Relative error of the bearing factor against h/R (log–log).");
+}
+
 }  // namespace
 
 Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
@@ -75,108 +203,15 @@ Study punch_bearing_study(const std::filesystem::path& scenes_dir) {
     study.runs.back().expected_wall_s = 4.0;
   }
   study.write = [](const StudyResults& results, StudyOutput& out) {
-    auto& md = out.document;
-    md.paragraph(
-        "A rigid flat punch of radius R = 5 cm is pushed at 5 mm/s into a weightless Tresca soil (mohr_coulomb with "
-        "φ' = 0, c' = 10 kPa, G/c' = 3000, ν = 0.3): GIMP, MUSL, volumetric strain smoothing, 2×2 particles per cell, "
-        "the FFP's node contact on the nodes inside the outline. The exact limit mean pressures are 5.69 c' for a "
-        "smooth punch (Shield 1955) and 6.05 c' for a rough one (Eason & Shield 1960), small-strain answers. "
-        "bearing_factor is the mean pressure over the settlement window s/R = 0.004–0.006 (4–6 times the elastic "
-        "settlement at the limit load, Boussinesq's s/R = π(1 − ν) p/(4G) ≈ 0.1 %) divided by c', read from the exact "
-        "impulse. The radial cells put R midway between two node columns (R/h = n + ½), so that the constrained "
-        "columns' tributary widths tile the base exactly; the scenes use R/h = 15.5.");
-    const std::size_t levels = kColumnsInside.size();
-    std::vector<std::vector<std::string>> rows;
-    std::vector<Series> curves;
-    Series error_series[2];
-    for (std::size_t k = 0; k < 2; ++k) {
-      error_series[k] = {{}, {}, std::string(kPunches[k].label) + " punch", "linespoints"};
-      for (std::size_t l = 0; l < levels; ++l) {
-        const std::size_t i = k * levels + l;
-        const double h = cell_m(kColumnsInside[l]);
-        const double n = figure(results, i, "bearing_factor");
-        const double error = n / kPunches[k].exact - 1.0;
-        rows.push_back({kPunches[k].label, fixed(100 * h, 3), fixed(kPunchRadius_m / h, 1),
-                        fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
-                        fixed(figure(results, i, "wall_time_s"), 1), fixed(n, 3), fixed(kPunches[k].exact, 2),
-                        fixed(100 * error, 1)});
-        if (std::isfinite(error)) {
-          error_series[k].x.push_back(h / kPunchRadius_m);
-          error_series[k].y.push_back(std::abs(error));
-        }
-        const CsvData hist = results.history(i);
-        if (hist.has("mean_pressure_kPa")) {
-          Series c{{}, {}, std::string(kPunches[k].label) + ", R/h = " + fixed(kPunchRadius_m / h, 1), "lines"};
-          const auto& s = hist.column("penetration_m");
-          const auto& p = hist.column("mean_pressure_kPa");
-          for (std::size_t r = 0; r < s.size(); ++r) {
-            c.x.push_back(s[r] / kPunchRadius_m);
-            c.y.push_back(p[r] / 10.0);  // c' = 10 kPa in both scenes
-          }
-          curves.push_back(c);
-        }
-      }
-    }
-    // Richardson from the three finest levels (refinement ratios 1.9–2.0): the MPM's own h → 0 limit.
-    std::string limits;
-    for (std::size_t k = 0; k < 2; ++k) {
-      const double n1 = figure(results, k * levels + levels - 3, "bearing_factor"),
-                   n2 = figure(results, k * levels + levels - 2, "bearing_factor"),
-                   n3 = figure(results, k * levels + levels - 1, "bearing_factor");
-      const Extrapolation e = richardson(n1, n2, n3);
-      rows.push_back({kPunches[k].label, "h → 0 (Richardson)", "–", "–", "–", "–", fixed(e.value, 3),
-                      fixed(kPunches[k].exact, 2), fixed(100 * (e.value / kPunches[k].exact - 1), 1)});
-      limits += std::string(k ? "; " : "") + kPunches[k].label + ": " + fixed(e.value, 3) + " against " +
-                fixed(kPunches[k].exact, 2) +
-                (std::isfinite(e.order) ? " (observed order " + fixed(e.order, 2) + ")"
-                                        : " (not extrapolated: the finest level, the sequence is not monotone)");
-    }
-    md.table({"punch", "min cell [cm]", "R/h", "particles", "steps", "wall time [s]", "bearing factor", "exact",
-              "error [%]"},
-             rows);
-    md.paragraph("The h → 0 limits of the MPM's own sequence: " + limits + ".");
-    // The variants against the scenes' settings at the same level.
-    const auto level = std::find(kColumnsInside.begin(), kColumnsInside.end(), kVariantColumns);
-    const double reference =
-        figure(results, static_cast<std::size_t>(level - kColumnsInside.begin()), "bearing_factor");
-    std::vector<std::vector<std::string>> variants = {{"the scene (2×2, Courant 0.5, MUSL, 5 mm/s, G/c' = 3000)",
-                                                       fixed(reference, 3), "–",
-                                                       fixed(100 * (reference / kShieldSmooth - 1), 1)}};
-    for (std::size_t v = 0; v < std::size(kVariants); ++v) {
-      const double n = figure(results, 2 * levels + v, "bearing_factor");
-      variants.push_back({kVariants[v].label, fixed(n, 3), fixed(100 * (n / reference - 1), 1),
-                          fixed(100 * (n / kShieldSmooth - 1), 1)});
-    }
-    md.paragraph("The smooth punch at R/h = 7.5 with one setting changed at a time:");
-    md.table({"variant", "bearing factor", "change [%]", "error [%]"}, variants);
-    md.paragraph(
-        "Reading: both punches converge to their exact limits, from below and at first order in h (the punch edge "
-        "is a stress singularity on a node-based contact), so the scenes' mesh is within 3 % of them. The settings "
-        "rest on the variants, not on the exact values: the particle density, the time step under MUSL and the push "
-        "speed about 5 mm/s move the answer by less than half a per cent; USL's answer depends on its time step; and "
-        "a rigidity of a few hundred reads the plateau at a settlement that has already raised it (G/c' = 300 at "
-        "s/R = 0.04–0.06), while G/c' = 1000 and 3000, each with its window at 4–6 elastic settlements, agree.");
-    Plot curves_plot{"Pressure–settlement of the punches", "settlement / radius s/R", "mean pressure / c'", curves};
-    curves_plot.key_position = "bottom right";
-    curves_plot.series.push_back(
-        {{0.0, 0.006}, {kShieldSmooth, kShieldSmooth}, "Shield 1955 (smooth)", "lines dashtype 2"});
-    curves_plot.series.push_back(
-        {{0.0, 0.006}, {kEasonShieldRough, kEasonShieldRough}, "Eason & Shield 1960 (rough)", "lines dashtype 2"});
-    if (write_png(curves_plot, out.figures_dir / "punch_pressure_settlement.png"))
-      md.figure(out.figures_relative + "/punch_pressure_settlement.png",
-                "Mean pressure over c' against settlement over radius, each punch at each mesh size, with the exact "
-                "limits.");
-    Plot error_plot{"Bearing factor error against mesh size",
-                    "h / R",
-                    "|N − N_exact| / N_exact",
-                    {error_series[0], error_series[1]},
-                    true,
-                    true,
-                    false,
-                    "bottom right"};
-    if (write_png(error_plot, out.figures_dir / "punch_convergence.png"))
-      md.figure(out.figures_relative + "/punch_convergence.png",
-                "Relative error of the bearing factor against h/R (log–log).");
+    write_introduction(out.document);
+    MeshSeries series = mesh_series(results);
+    const std::string limits = add_limits(results, series.rows);
+    out.document.table({"punch", "min cell [cm]", "R/h", "particles", "steps", "wall time [s]", "bearing factor",
+                        "exact", "error [%]"},
+                       series.rows);
+    out.document.paragraph("The h → 0 limits of the MPM's own sequence: " + limits + ".");
+    write_variants(out.document, results);
+    write_figures(out, series);
   };
   return study;
 }
