@@ -131,6 +131,13 @@ std::vector<std::int32_t> BodySubcycle::add_impulses(const Simulation& s, const 
   return slots;
 }
 
+// Where the body's k-th particle's support node (a, b) sits among the step's compact nodes.
+template <int S>
+auto BodySubcycle::support_of(std::size_t k) const {
+  const std::int32_t* slots = &particle_nodes_[k * S * S];
+  return [slots](int a, int b) { return static_cast<std::size_t>(slots[b * S + a]); };
+}
+
 // One substep of δt = h: the step's stages on the body's nodes and particles alone.
 template <int S>
 void BodySubcycle::substep(Simulation& s, double h) {
@@ -173,12 +180,9 @@ void BodySubcycle::internal_forces(const Simulation& s, bool smoothed) {
   std::fill(fr_.begin(), fr_.end(), 0.0);
   std::fill(fz_.begin(), fz_.end(), 0.0);
   for (std::size_t p = b.begin; p < b.end; ++p) {
-    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
     const ForceStress sig = smoothed ? b_bar_force_stress(P.stress[p], cell_mean_[particle_cell_[p - b.begin]])
                                      : own_force_stress(P.stress[p]);
-    add_internal_force<S>(
-        s.weights[p], sig, P.volume[p], [slots](int a, int bz) { return static_cast<std::size_t>(slots[bz * S + a]); },
-        fr_.data(), fz_.data());
+    add_internal_force<S>(s.weights[p], sig, P.volume[p], support_of<S>(p - b.begin), fr_.data(), fz_.data());
   }
 }
 
@@ -201,10 +205,7 @@ template <int S>
 void BodySubcycle::strain_increments(Simulation& s, double h) {
   const Body& b = s.bodies[body_];
   for (std::size_t p = b.begin; p < b.end; ++p) {
-    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
-    const VelocityGradient L = velocity_gradient<S>(
-        s.weights[p], [slots](int a, int bz) { return static_cast<std::size_t>(slots[bz * S + a]); }, vr_.data(),
-        vz_.data());
+    const VelocityGradient L = velocity_gradient<S>(s.weights[p], support_of<S>(p - b.begin), vr_.data(), vz_.data());
     apply_velocity_gradient(L, h, s.strain_increment[p], s.spin_dt[p], s.particles.volume[p]);
   }
 }
@@ -255,21 +256,15 @@ void BodySubcycle::update_particles(Simulation& s) {
   const Body& b = s.bodies[body_];
   Particles& P = s.particles;
   for (std::size_t p = b.begin; p < b.end; ++p) {
-    const ShapeWeights& w = s.weights[p];
-    const std::int32_t* slots = &particle_nodes_[(p - b.begin) * S * S];
     double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0, ur = 0.0, uz = 0.0;
-    for (int bz = 0; bz < S; ++bz) {
-      for (int a = 0; a < S; ++a) {
-        const std::int32_t c = slots[bz * S + a];
-        const double N = w.wr[a] * w.wz[bz];
-        vr += N * vr_[c];
-        vz += N * vz_[c];
-        dvr += N * (vr_[c] - vr0_[c]);
-        dvz += N * (vz_[c] - vz0_[c]);
-        ur += N * ur_[c];
-        uz += N * uz_[c];
-      }
-    }
+    for_support_at<S>(s.weights[p], support_of<S>(p - b.begin), [&](std::size_t c, double N, double, double) {
+      vr += N * vr_[c];
+      vz += N * vz_[c];
+      dvr += N * (vr_[c] - vr0_[c]);
+      dvz += N * (vz_[c] - vz0_[c]);
+      ur += N * ur_[c];
+      uz += N * uz_[c];
+    });
     blend_flip_pic(P, p, s.settings.flip_fraction, vr, vz, dvr, dvz);
     move_within_walls(P, p, P.r[p] + ur, P.z[p] + uz, s.walls, s.wall_clamps);
   }

@@ -77,6 +77,8 @@ class BodySubcycle {
   // The pieces of run(), each the counterpart of a stage of the step on the body's own nodes.
   template <int S>
   void collect_support(const Simulation& simulation);
+  template <int S>
+  auto support_of(std::size_t body_particle) const;
   void load_nodes(const Simulation& simulation);
   std::vector<std::int32_t> add_impulses(const Simulation& simulation, const std::vector<NodalImpulse>& impulses);
   template <int S>

@@ -23,21 +23,16 @@ inline ForceStress b_bar_force_stress(const Voigt& own, double cell_mean_stress)
   return {own[0] + shift, own[1] + shift, own[2] + shift, own[3]};
 }
 
-/// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] over the particle's S×S support,
-/// S_ip = s_r,a s_z,b and G_ip = (s_r,a' s_z,b, s_r,a s_z,b'); node(a, b) is where the
-/// support's node (a, b) sits in force_r and force_z (the grid's index, or a subcycled body's own).
+/// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] over the particle's S×S support; node(a, b)
+/// is where the support's node (a, b) sits in force_r and force_z (for_support_at).
 template <int S, class Node>
 inline void add_internal_force(const ShapeWeights& w, const ForceStress& sig, double V, Node&& node,
                                double* force_r, double* force_z) {
   const double hoop = sig.tt * w.inverse_r;
-  for (int b = 0; b < S; ++b) {
-    for (int a = 0; a < S; ++a) {
-      const std::size_t i = node(a, b);
-      const double N = w.wr[a] * w.wz[b], Gr = w.gr[a] * w.wz[b], Gz = w.wr[a] * w.gz[b];
-      force_r[i] -= V * (sig.rr * Gr + sig.rz * Gz + hoop * N);
-      force_z[i] -= V * (sig.rz * Gr + sig.zz * Gz);
-    }
-  }
+  for_support_at<S>(w, node, [&](std::size_t i, double N, double Gr, double Gz) {
+    force_r[i] -= V * (sig.rr * Gr + sig.rz * Gz + hoop * N);
+    force_z[i] -= V * (sig.rz * Gr + sig.zz * Gz);
+  });
 }
 
 }  // namespace ffp::mpm

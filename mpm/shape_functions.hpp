@@ -106,4 +106,13 @@ struct alignas(64) ShapeWeights {
   std::int32_t node_r = 0, node_z = 0;  ///< first node of the support patch
 };
 
+/// fn(i, S_ip, G_ip,r, G_ip,z) over a particle's S×S support node by node, row b outside:
+/// S_ip = s_r,a s_z,b and G_ip = (s_r,a' s_z,b, s_r,a s_z,b'), where node(a, b) = i is where the
+/// support's node (a, b) sits in the arrays fn works on (the grid's index, or a subcycled body's own).
+template <int S, class Node, class Fn>
+inline void for_support_at(const ShapeWeights& w, Node&& node, Fn&& fn) {
+  for (int b = 0; b < S; ++b)
+    for (int a = 0; a < S; ++a) fn(node(a, b), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
+}
+
 }  // namespace ffp::mpm

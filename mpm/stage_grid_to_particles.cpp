@@ -15,15 +15,6 @@ namespace ffp::mpm {
 
 namespace {
 
-/// fn(node, S_ip) over the S×S support of a particle.
-template <int S, class Fn>
-inline void for_support_nodes(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
-  for (int b = 0; b < S; ++b) {
-    const std::size_t row = grid.node(w.node_r, w.node_z + b);
-    for (int a = 0; a < S; ++a) fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b]);
-  }
-}
-
 /// A GIMP stacked pair (stacked_pair): each particle's row weights N_b = s_r s_z,b,
 /// and where their four node rows start (the lower's row b is node row b, the
 /// upper's row b is node row b + 1).
@@ -308,7 +299,7 @@ void update_particles_impl(Simulation& s) {
     // A GIMP edge particle: node by node.
     if (p < n) {  // not a subcycled body's particle
       double vr = 0.0, vz = 0.0, dvr = 0.0, dvz = 0.0;
-      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+      for_support<S>(s.grid, w, [&](std::size_t i, double N, double, double) {
         vr += N * f.velocity_new_r[i];
         vz += N * f.velocity_new_z[i];
         if constexpr (Remap) {
@@ -323,7 +314,7 @@ void update_particles_impl(Simulation& s) {
     }
     if constexpr (Remap) {
       const double pr = P.mass[p] * P.vr[p], pz = P.mass[p] * P.vz[p];
-      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+      for_support<S>(s.grid, w, [&](std::size_t i, double N, double, double) {
         f.momentum_r[i] += N * pr;
         f.momentum_z[i] += N * pz;
       });
@@ -356,7 +347,7 @@ void move_particles_impl(Simulation& s) {
       const NodalField& f = s.grid.fields[s.bodies[P.body[p]].field];
       const ShapeWeights& w = s.weights[p];
       double vr = 0.0, vz = 0.0;
-      for_support_nodes<S>(s.grid, w, [&](std::size_t i, double N) {
+      for_support<S>(s.grid, w, [&](std::size_t i, double N, double, double) {
         vr += N * f.velocity_r[i];
         vz += N * f.velocity_z[i];
       });

@@ -12,16 +12,6 @@ namespace ffp::mpm {
 
 namespace {
 
-/// Visit the S×S support of particle p: fn(node, S_ip, G_ip,r, G_ip,z).
-template <int S, class Fn>
-inline void for_support(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
-  for (int b = 0; b < S; ++b) {
-    const std::size_t row = grid.node(w.node_r, w.node_z + b);
-    for (int a = 0; a < S; ++a)
-      fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
-  }
-}
-
 /// m_i += S_ip m_p and p_i += S_ip m_p v_p for one particle.
 template <int S>
 inline void add_mass_momentum(const Simulation& s, std::size_t p, NodalField& f) {

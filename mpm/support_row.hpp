@@ -26,6 +26,17 @@ inline double row_sum(Row x) { return (x[0] + x[1]) + x[2]; }
 /// x[0] + x[1]: a linear support row is a Pair.
 inline double row_sum(Pair x) { return x[0] + x[1]; }
 
+/// fn(node, S_ip, G_ip,r, G_ip,z) over the S×S support of a particle on the grid, node by
+/// node: for linear hats and for the GIMP particles whose rows do not go as vectors.
+template <int S, class Fn>
+inline void for_support(const Grid& grid, const ShapeWeights& w, Fn&& fn) {
+  for (int b = 0; b < S; ++b) {
+    const std::size_t row = grid.node(w.node_r, w.node_z + b);
+    for (int a = 0; a < S; ++a)
+      fn(row + static_cast<std::size_t>(a), w.wr[a] * w.wz[b], w.gr[a] * w.wz[b], w.wr[a] * w.gz[b]);
+  }
+}
+
 /// The vector of one support row: S = 3 (GIMP) a Row, S = 2 (linear hats) a Pair.
 template <int S>
 using SupportRow = std::conditional_t<S == 3, Row, Pair>;

@@ -15,23 +15,18 @@ struct VelocityGradient {
   double rr = 0.0, rz = 0.0, zr = 0.0, zz = 0.0, tt = 0.0;
 };
 
-/// L_p over a particle's S×S support node by node, S_ip = s_r,a s_z,b and
-/// G_ip = (s_r,a' s_z,b, s_r,a s_z,b'); node(a, b) is where the support's node
-/// (a, b) sits in vr and vz (the grid's index, or a subcycled body's own).
+/// L_p over a particle's S×S support node by node; node(a, b) is where the support's
+/// node (a, b) sits in vr and vz (for_support_at).
 template <int S, class Node>
 inline VelocityGradient velocity_gradient(const ShapeWeights& w, Node&& node, const double* vr, const double* vz) {
   VelocityGradient L;
-  for (int b = 0; b < S; ++b) {
-    for (int a = 0; a < S; ++a) {
-      const std::size_t i = node(a, b);
-      const double N = w.wr[a] * w.wz[b], Gr = w.gr[a] * w.wz[b], Gz = w.wr[a] * w.gz[b];
-      L.rr += vr[i] * Gr;
-      L.rz += vr[i] * Gz;
-      L.zr += vz[i] * Gr;
-      L.zz += vz[i] * Gz;
-      L.tt += vr[i] * N;
-    }
-  }
+  for_support_at<S>(w, node, [&](std::size_t i, double N, double Gr, double Gz) {
+    L.rr += vr[i] * Gr;
+    L.rz += vr[i] * Gz;
+    L.zr += vz[i] * Gr;
+    L.zz += vz[i] * Gz;
+    L.tt += vr[i] * N;
+  });
   L.tt *= w.inverse_r;
   return L;
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "reports/studies/ffp_figures.hpp"
 #include "reports/studies/studies.hpp"
@@ -278,18 +279,18 @@ void write_phase_figure(StudyOutput& out, const std::vector<Level>& levels, cons
     peak_row.x.push_back(100 * l.cell_m);
     peak_row.y.push_back(l.peak_g);
   }
-  const Plot depth_plot{.title = "Final penetration against the cell size, four tip phases per level",
-                        .x_label = "min cell (cm)",
-                        .y_label = "final penetration (cm)",
-                        .series = {depth_phases, depth_mean, depth_row},
-                        .log_x = true,
-                        .key_position = "top right"};
-  const Plot peak_plot{.title = "2 ms peak deceleration against the cell size",
-                       .x_label = "min cell (cm)",
-                       .y_label = "2 ms peak (g)",
-                       .series = {peak_phases, peak_mean, peak_row},
-                       .log_x = true,
-                       .key_position = "top left"};
+  auto against_cell = [](std::string title, std::string y_label, std::vector<Series> series, std::string key) {
+    return Plot{.title = std::move(title),
+                .x_label = "min cell (cm)",
+                .y_label = std::move(y_label),
+                .series = std::move(series),
+                .log_x = true,
+                .key_position = std::move(key)};
+  };
+  const Plot depth_plot = against_cell("Final penetration against the cell size, four tip phases per level",
+                                       "final penetration (cm)", {depth_phases, depth_mean, depth_row}, "top right");
+  const Plot peak_plot = against_cell("2 ms peak deceleration against the cell size", "2 ms peak (g)",
+                                      {peak_phases, peak_mean, peak_row}, "top left");
   if (write_png_stack({depth_plot, peak_plot}, out.figures_dir / "convergence_tip_phases.png"))
     out.document.figure(out.figures_relative + "/convergence_tip_phases.png",
                         "Each tip phase's final penetration and 2 ms peak at its level (points), their means (line) "
