@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <span>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -170,118 +172,175 @@ std::string program_identity(const fs::path& binary, const std::string& program_
   return program_version + " " + hex_key(read_file(binary));
 }
 
-std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
-                                const fs::path& cache_root, const std::string& program_version, int jobs,
-                                Scheduler scheduler, std::span<FollowUp> follow_ups) {
-  fs::create_directories(cache_root);
-  const std::string identity = program_identity(ffp_binary, program_version);
-  // The requests given, then the follow-ups' as they come (all_requests[i] ↔ outcomes[i]).
-  std::vector<RunRequest> all_requests = requests;
-  std::vector<RunOutcome> outcomes(requests.size());
-  std::vector<std::size_t> pending;  // to run; [next, end) not started yet
-  std::size_t next = 0, finished = 0;
-  std::vector<char> done;                             // finished or cached (a duplicate: see `original`)
-  std::vector<std::size_t> original;                  // a request's first request with the same key (itself if none)
-  std::map<std::string, std::size_t> first_with_key;  // studies may share a run: run it once
-  std::vector<double> expected_wall_s;                // a shared run keeps the largest estimate
-  std::size_t duplicate_count = 0, cached = 0;
-  // Keys, duplicates and cache for all_requests[from, end); the new pending runs go
-  // among those not started yet, longest first (stable: else in the given order).
-  auto enqueue = [&](std::size_t from) {
-    const std::size_t n = all_requests.size();
-    outcomes.resize(n);
-    done.resize(n, 0);
-    original.resize(n);
-    expected_wall_s.resize(n, 0.0);
-    std::vector<std::size_t> fresh;
-    for (std::size_t i = from; i < n; ++i) {
-      const std::string key = run_key(all_requests[i], identity);
-      const auto [it, inserted] = first_with_key.emplace(key, i);
-      original[i] = it->second;
-      expected_wall_s[it->second] = std::max(expected_wall_s[it->second], all_requests[i].expected_wall_s);
-      if (!inserted) {
-        ++duplicate_count;
-        continue;
-      }
-      outcomes[i].out_dir = cache_root / (slug(all_requests[i].label) + "-" + key);
-      // Complete when its manifest is there (written last, then the folder renamed
-      // into place); summary.json alone marks a run cached before manifests.
-      if (fs::exists(outcomes[i].out_dir / kOutputManifest) || fs::exists(outcomes[i].out_dir / "summary.json")) {
-        outcomes[i].cached = true;
-        outcomes[i].exit_code = 0;
-        done[i] = 1;
-        ++cached;
-      } else {
-        fresh.push_back(i);
-      }
-    }
-    pending.insert(pending.end(), fresh.begin(), fresh.end());
-    std::stable_sort(pending.begin() + static_cast<long>(next), pending.end(),
-                     [&](std::size_t a, std::size_t b) { return expected_wall_s[a] > expected_wall_s[b]; });
-    return fresh.size();
-  };
-  auto outcome_of = [&](std::size_t i) {
-    RunOutcome o = outcomes[original[i]];
-    if (original[i] != i) o.cached = true;
-    return o;
-  };
-  // The follow-ups whose inputs are all done make their runs; `index` keeps where they went.
-  std::vector<char> made(follow_ups.size(), 0);
-  std::vector<std::vector<std::size_t>> index(follow_ups.size());
-  auto make_follow_ups = [&](bool all_done) {
-    for (std::size_t f = 0; f < follow_ups.size(); ++f) {
-      if (made[f]) continue;
-      FollowUp& up = follow_ups[f];
-      bool ready = true;
-      for (std::size_t i = up.first; i < up.last && ready; ++i) ready = done[original[i]] != 0;
-      if (!ready && !all_done) continue;
-      made[f] = 1;
-      std::vector<RunOutcome> inputs;
-      for (std::size_t i = up.first; i < up.last; ++i) inputs.push_back(outcome_of(i));
-      up.requests = up.make(inputs);
-      const std::size_t from = all_requests.size();
-      all_requests.insert(all_requests.end(), up.requests.begin(), up.requests.end());
-      const std::size_t to_run = enqueue(from);
-      for (std::size_t i = from; i < all_requests.size(); ++i) index[f].push_back(i);
-      if (!up.requests.empty())
-        std::fprintf(stderr, "runs: %zu more that use the results of earlier runs, %zu to do\n", up.requests.size(),
-                     to_run);
-    }
-  };
-  auto finish = [&] {
-    for (std::size_t f = 0; f < follow_ups.size(); ++f) {
-      follow_ups[f].outcomes.clear();
-      for (const std::size_t i : index[f]) follow_ups[f].outcomes.push_back(outcome_of(i));
-    }
-    std::vector<RunOutcome> given(requests.size());
-    for (std::size_t i = 0; i < requests.size(); ++i) given[i] = outcome_of(i);
-    return given;
-  };
+namespace {
 
-  enqueue(0);
-  std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending.size(), cached);
-  if (scheduler == Scheduler::slurm) {
-    // One job array for the given runs, then one for the follow-ups' (they need the first's results).
-    if (!pending.empty()) run_on_slurm(ffp_binary, all_requests, pending, outcomes, cache_root);
-    std::fill(done.begin(), done.end(), 1);
-    next = pending.size();
+/// The runs of one run_all: the requests given, then the follow-ups' as they come
+/// (requests_[i] ↔ outcomes_[i]). A run whose key an earlier request has is that
+/// request's duplicate and runs once (studies may share a run).
+class RunPool {
+ public:
+  RunPool(const fs::path& ffp_binary, const std::vector<RunRequest>& requests, const fs::path& cache_root,
+          std::string identity, std::span<FollowUp> follow_ups)
+      : binary_(ffp_binary),
+        cache_root_(cache_root),
+        identity_(std::move(identity)),
+        given_(requests.size()),
+        requests_(requests),
+        follow_ups_(follow_ups),
+        made_(follow_ups.size(), 0),
+        follow_up_runs_(follow_ups.size()) {
+    enqueue(0);
+    std::fprintf(stderr, "runs: %zu to do, %zu cached\n", pending_.size(), cached_);
+  }
+
+  /// One job array for the given runs, then one for the follow-ups' (they need the first's results).
+  std::vector<RunOutcome> on_slurm() {
+    if (!pending_.empty()) ffp::run_on_slurm(binary_, requests_, pending_, outcomes_, cache_root_);
+    std::fill(done_.begin(), done_.end(), 1);
+    next_ = pending_.size();
     make_follow_ups(true);
-    const std::vector<std::size_t> second(pending.begin() + static_cast<long>(next), pending.end());
-    if (!second.empty()) run_on_slurm(ffp_binary, all_requests, second, outcomes, cache_root);
+    const std::vector<std::size_t> second(pending_.begin() + static_cast<long>(next_), pending_.end());
+    if (!second.empty()) ffp::run_on_slurm(binary_, requests_, second, outcomes_, cache_root_);
     return finish();
   }
 
+  /// At most `jobs` runs at once on this machine, the follow-ups' runs joining the queue as
+  /// their inputs finish.
+  std::vector<RunOutcome> on_this_machine(int jobs) {
+    const std::size_t parallel = static_cast<std::size_t>(std::max(1, jobs));
+    set_child_environment(parallel);
+    make_follow_ups(false);  // those whose inputs were all cached
+    while (finished_ < pending_.size()) {
+      while (running_.size() < parallel && next_ < pending_.size()) launch(pending_[next_++]);
+      if (running_.empty()) continue;
+      int status = 0;
+      const pid_t pid = wait_for_a_run(status);
+      if (interrupt_requested()) {
+        stop_running();
+        throw_if_interrupted();
+      }
+      if (pid < 0) {
+        if (errno == EINTR) continue;
+        break;
+      }
+      const auto it = running_.find(pid);
+      if (it == running_.end()) continue;
+      record_exit(it->second, status);
+      running_.erase(it);
+      try {
+        make_follow_ups(false);
+      } catch (...) {
+        stop_running();  // a follow-up that cannot be made stops the report, and its runs with it
+        throw;
+      }
+    }
+    return finish();
+  }
+
+ private:
   struct Running {
     std::size_t index;
     std::chrono::steady_clock::time_point start;
     fs::path log;
   };
-  std::map<pid_t, Running> running;
-  std::vector<char*> child_environ;  // filled below, before the first launch
-  auto launch = [&](std::size_t i) {
-    const RunRequest& r = all_requests[i];
-    std::vector<std::string> args = {ffp_binary.string(),          "run",    r.scene_file.string(), "--out",
-                                     outcomes[i].out_dir.string(), "--quiet"};
+
+  /// Keys, duplicates and cache for requests_[from, end); the new pending runs go among
+  /// those not started yet, longest first (stable: else in the given order). Returns how
+  /// many are to run.
+  std::size_t enqueue(std::size_t from) {
+    const std::size_t n = requests_.size();
+    outcomes_.resize(n);
+    done_.resize(n, 0);
+    original_.resize(n);
+    expected_wall_s_.resize(n, 0.0);
+    std::vector<std::size_t> fresh;
+    for (std::size_t i = from; i < n; ++i) {
+      const std::string key = run_key(requests_[i], identity_);
+      const auto [it, inserted] = first_with_key_.emplace(key, i);
+      original_[i] = it->second;
+      expected_wall_s_[it->second] = std::max(expected_wall_s_[it->second], requests_[i].expected_wall_s);
+      if (!inserted) {
+        ++duplicates_;
+        continue;
+      }
+      outcomes_[i].out_dir = cache_root_ / (slug(requests_[i].label) + "-" + key);
+      // Complete when its manifest is there (written last, then the folder renamed
+      // into place); summary.json alone marks a run cached before manifests.
+      if (fs::exists(outcomes_[i].out_dir / kOutputManifest) || fs::exists(outcomes_[i].out_dir / "summary.json")) {
+        outcomes_[i].cached = true;
+        outcomes_[i].exit_code = 0;
+        done_[i] = 1;
+        ++cached_;
+      } else {
+        fresh.push_back(i);
+      }
+    }
+    pending_.insert(pending_.end(), fresh.begin(), fresh.end());
+    std::stable_sort(pending_.begin() + static_cast<long>(next_), pending_.end(),
+                     [&](std::size_t a, std::size_t b) { return expected_wall_s_[a] > expected_wall_s_[b]; });
+    return fresh.size();
+  }
+
+  /// Request i's outcome: its own, or (a duplicate) its original's, marked cached.
+  RunOutcome outcome_of(std::size_t i) const {
+    RunOutcome o = outcomes_[original_[i]];
+    if (original_[i] != i) o.cached = true;
+    return o;
+  }
+
+  /// The follow-ups whose inputs are all done (or all of them) make their runs.
+  void make_follow_ups(bool all_done) {
+    for (std::size_t f = 0; f < follow_ups_.size(); ++f) {
+      if (made_[f]) continue;
+      FollowUp& up = follow_ups_[f];
+      bool ready = true;
+      for (std::size_t i = up.first; i < up.last && ready; ++i) ready = done_[original_[i]] != 0;
+      if (!ready && !all_done) continue;
+      made_[f] = 1;
+      std::vector<RunOutcome> inputs;
+      for (std::size_t i = up.first; i < up.last; ++i) inputs.push_back(outcome_of(i));
+      up.requests = up.make(inputs);
+      const std::size_t from = requests_.size();
+      requests_.insert(requests_.end(), up.requests.begin(), up.requests.end());
+      const std::size_t to_run = enqueue(from);
+      for (std::size_t i = from; i < requests_.size(); ++i) follow_up_runs_[f].push_back(i);
+      if (!up.requests.empty())
+        std::fprintf(stderr, "runs: %zu more that use the results of earlier runs, %zu to do\n", up.requests.size(),
+                     to_run);
+    }
+  }
+
+  /// The follow-ups' outcomes into them; the given requests' outcomes returned.
+  std::vector<RunOutcome> finish() {
+    for (std::size_t f = 0; f < follow_ups_.size(); ++f) {
+      follow_ups_[f].outcomes.clear();
+      for (const std::size_t i : follow_up_runs_[f]) follow_ups_[f].outcomes.push_back(outcome_of(i));
+    }
+    std::vector<RunOutcome> given(given_);
+    for (std::size_t i = 0; i < given_; ++i) given[i] = outcome_of(i);
+    return given;
+  }
+
+  /// The children's environment: this one's, with each run's share of OpenMP threads
+  /// (spinning threads on an oversubscribed machine slow everything down) unless the
+  /// user chose OMP_NUM_THREADS, and this process's id, so that the runs stop when it
+  /// dies, however it dies (see command_run).
+  void set_child_environment(std::size_t parallel) {
+    for (char** e = environ; *e != nullptr; ++e)
+      if (std::string_view(*e).rfind("FFP_RUN_POOL_PID=", 0) != 0) environment_.emplace_back(*e);
+    if (std::getenv("OMP_NUM_THREADS") == nullptr) {
+      const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+      environment_.push_back("OMP_NUM_THREADS=" + std::to_string(std::max<std::size_t>(1, cores / parallel)));
+    }
+    environment_.push_back("FFP_RUN_POOL_PID=" + std::to_string(::getpid()));
+    for (auto& e : environment_) child_environ_.push_back(e.data());
+    child_environ_.push_back(nullptr);
+  }
+
+  void launch(std::size_t i) {
+    const RunRequest& r = requests_[i];
+    std::vector<std::string> args = {binary_.string(), "run", r.scene_file.string(),
+                                     "--out", outcomes_[i].out_dir.string(), "--quiet"};
     for (const auto& o : r.overrides) {
       args.push_back("--set");
       args.push_back(o);
@@ -289,7 +348,7 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    const fs::path log = cache_root / ("." + slug(r.label) + ".log");
+    const fs::path log = cache_root_ / ("." + slug(r.label) + ".log");
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -304,76 +363,69 @@ std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<Ru
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
     posix_spawnattr_setpgroup(&attributes, 0);
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), child_environ.data());
+    const int rc = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), child_environ_.data());
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) {
-      outcomes[i].exit_code = 127;
-      outcomes[i].error = "could not start " + args[0];
-      done[i] = 1;
-      ++finished;
+      outcomes_[i].exit_code = 127;
+      outcomes_[i].error = "could not start " + args[0];
+      done_[i] = 1;
+      ++finished_;
       return;
     }
-    running[pid] = Running{i, std::chrono::steady_clock::now(), log};
-  };
-  auto stop_running = [&] {
+    running_[pid] = Running{i, std::chrono::steady_clock::now(), log};
+  }
+
+  /// A run's exit: its outcome, its log kept only when it failed, a progress line.
+  void record_exit(const Running& run, int status) {
+    const std::size_t i = run.index;
+    RunOutcome& o = outcomes_[i];
+    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    o.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+    if (o.exit_code != 0) o.error = last_line(run.log);
+    std::error_code ignored;
+    if (o.exit_code == 0) fs::remove(run.log, ignored);
+    done_[i] = 1;
+    ++finished_;
+    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished_ + cached_, requests_.size() - duplicates_,
+                 requests_[i].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
+  }
+
+  void stop_running() {
     int status = 0;
-    for (const auto& [child, _] : running) ::kill(child, SIGTERM);
+    for (const auto& [child, _] : running_) ::kill(child, SIGTERM);
     while (::waitpid(-1, &status, 0) > 0) {
     }
-  };
+  }
 
-  const std::size_t parallel = static_cast<std::size_t>(std::max(1, jobs));
-  // Runs side by side share the cores: give each its share of OpenMP threads
-  // (spinning threads on an oversubscribed machine slow everything down),
-  // unless the user chose OMP_NUM_THREADS.
-  std::vector<std::string> environment;
-  for (char** e = environ; *e != nullptr; ++e)
-    if (std::string_view(*e).rfind("FFP_RUN_POOL_PID=", 0) != 0) environment.emplace_back(*e);
-  if (std::getenv("OMP_NUM_THREADS") == nullptr) {
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    environment.push_back("OMP_NUM_THREADS=" + std::to_string(std::max<std::size_t>(1, cores / parallel)));
-  }
-  // The runs stop when this process dies, however it dies (see command_run).
-  environment.push_back("FFP_RUN_POOL_PID=" + std::to_string(::getpid()));
-  for (auto& e : environment) child_environ.push_back(e.data());
-  child_environ.push_back(nullptr);
-  make_follow_ups(false);  // those whose inputs were all cached
-  while (finished < pending.size()) {
-    while (running.size() < parallel && next < pending.size()) launch(pending[next++]);
-    if (running.empty()) continue;
-    int status = 0;
-    const pid_t pid = wait_for_a_run(status);
-    if (interrupt_requested()) {
-      stop_running();
-      throw_if_interrupted();
-    }
-    if (pid < 0) {
-      if (errno == EINTR) continue;
-      break;
-    }
-    auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const std::size_t i = it->second.index;
-    RunOutcome& o = outcomes[i];
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    o.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->second.start).count();
-    if (o.exit_code != 0) o.error = last_line(it->second.log);
-    std::error_code ignored;
-    if (o.exit_code == 0) fs::remove(it->second.log, ignored);
-    done[i] = 1;
-    ++finished;
-    std::fprintf(stderr, "  [%zu/%zu] %-40s %s (%.1f s)\n", finished + cached, all_requests.size() - duplicate_count,
-                 all_requests[i].label.c_str(), o.exit_code == 0 ? "done" : "FAILED", o.wall_time_s);
-    running.erase(it);
-    try {
-      make_follow_ups(false);
-    } catch (...) {
-      stop_running();  // a follow-up that cannot be made stops the report, and its runs with it
-      throw;
-    }
-  }
-  return finish();
+  const fs::path binary_, cache_root_;
+  const std::string identity_;
+  const std::size_t given_;  ///< the requests given; the follow-ups' come after them
+  std::vector<RunRequest> requests_;
+  std::vector<RunOutcome> outcomes_;
+  std::vector<std::size_t> pending_;  ///< to run; [next_, end) not started yet
+  std::size_t next_ = 0, finished_ = 0;
+  std::vector<char> done_;                             ///< finished or cached (a duplicate: see original_)
+  std::vector<std::size_t> original_;                  ///< a request's first request with the same key (itself if none)
+  std::map<std::string, std::size_t> first_with_key_;  ///< studies may share a run: run it once
+  std::vector<double> expected_wall_s_;                ///< a shared run keeps the largest estimate
+  std::size_t duplicates_ = 0, cached_ = 0;
+  std::span<FollowUp> follow_ups_;
+  std::vector<char> made_;                                ///< per follow-up: its runs made
+  std::vector<std::vector<std::size_t>> follow_up_runs_;  ///< per follow-up: where its runs went
+  std::map<pid_t, Running> running_;
+  std::vector<std::string> environment_;  ///< the children's, and the pointers posix_spawn takes
+  std::vector<char*> child_environ_;
+};
+
+}  // namespace
+
+std::vector<RunOutcome> run_all(const fs::path& ffp_binary, const std::vector<RunRequest>& requests,
+                                const fs::path& cache_root, const std::string& program_version, int jobs,
+                                Scheduler scheduler, std::span<FollowUp> follow_ups) {
+  fs::create_directories(cache_root);
+  RunPool pool(ffp_binary, requests, cache_root, program_identity(ffp_binary, program_version), follow_ups);
+  return scheduler == Scheduler::slurm ? pool.on_slurm() : pool.on_this_machine(jobs);
 }
 
 }  // namespace ffp
