@@ -26,8 +26,8 @@ inline ForceStress b_bar_force_stress(const Voigt& own, double cell_mean_stress)
 /// f_i^int −= V_p [σ_p·G_ip + σ_θθ,p S_ip/r_p e_r] over the particle's S×S support; node(a, b)
 /// is where the support's node (a, b) sits in force_r and force_z (for_support_at).
 template <int S, class Node>
-inline void add_internal_force(const ShapeWeights& w, const ForceStress& sig, double V, Node&& node,
-                               double* force_r, double* force_z) {
+inline void add_internal_force(const ShapeWeights& w, const ForceStress& sig, double V, Node&& node, double* force_r,
+                               double* force_z) {
   const double hoop = sig.tt * w.inverse_r;
   for_support_at<S>(w, node, [&](std::size_t i, double N, double Gr, double Gz) {
     force_r[i] -= V * (sig.rr * Gr + sig.rz * Gz + hoop * N);

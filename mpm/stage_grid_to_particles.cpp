@@ -130,8 +130,7 @@ void remap_gimp_strips(Simulation& s, BlendAndMove& blend_and_move, Update& upda
   // are read once per nodal array, and the remap adds to each once, the lower's
   // term before the upper's, as one by one (the same bits). Array by array, so
   // that only that array's sums are live.
-  auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w,
-                         const ShapeWeights& v) {
+  auto update_pair = [&](std::size_t p, std::size_t q, NodalField& f, const ShapeWeights& w, const ShapeWeights& v) {
     const StackedPairRows N(s.grid, w, v);
     auto gather = [&](const double* x, Vec& sum_p, Vec& sum_q) {
       for (int row = 0; row < S + 1; ++row) {

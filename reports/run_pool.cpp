@@ -339,8 +339,8 @@ class RunPool {
 
   void launch(std::size_t i) {
     const RunRequest& r = requests_[i];
-    std::vector<std::string> args = {binary_.string(), "run", r.scene_file.string(),
-                                     "--out", outcomes_[i].out_dir.string(), "--quiet"};
+    std::vector<std::string> args = {
+        binary_.string(), "run", r.scene_file.string(), "--out", outcomes_[i].out_dir.string(), "--quiet"};
     for (const auto& o : r.overrides) {
       args.push_back("--set");
       args.push_back(o);

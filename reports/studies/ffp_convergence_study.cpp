@@ -111,10 +111,9 @@ std::vector<RunRequest> convergence_runs(const std::filesystem::path& scenes_dir
       const double phase = kTipPhases[k];
       // The 0.5 phase is labelled in words, as the text names it.
       const std::string label = phase == 0.5 ? "tip half a cell off, " : "tip " + fixed(phase, 2) + " cell off, ";
-      controls.tip_phase[k] = add(label + cm(h) + " cm",
-                                  {mesh, "mesh.tip_offset_cells=" + fixed(phase, 2), kPicPerSecond,
-                                   "output.field_times_s=[]"},
-                                  h);
+      controls.tip_phase[k] =
+          add(label + cm(h) + " cm",
+              {mesh, "mesh.tip_offset_cells=" + fixed(phase, 2), kPicPerSecond, "output.field_times_s=[]"}, h);
     }
     where.controls.push_back(controls);
   }
@@ -181,12 +180,12 @@ void write_health_table(Markdown& md, const StudyResults& results, const Converg
     if (results.summary(run).empty()) continue;
     const double dt0 = figure(results, run, "dt_s"), dt_min = figure(results, run, "dt_min_s");
     const bool collapsed = std::isfinite(dt0) && std::isfinite(dt_min) && dt_min < 0.01 * dt0;
-    health.push_back(
-        {cm(kReferenceCells_m[i]), fixed(1000 * figure(results, run, "max_soil_intrusion_m"), 2),
-         fixed(figure(results, run, "max_soil_intrusion_cells"), 2), fixed(figure(results, run, "max_volume_ratio"), 2),
-         fixed(figure(results, run, "inflated_particles_max"), 0), scientific(dt_min),
-         scientific(last(results.history(run), "soil_kinetic_energy_J")),
-         collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
+    health.push_back({cm(kReferenceCells_m[i]), fixed(1000 * figure(results, run, "max_soil_intrusion_m"), 2),
+                      fixed(figure(results, run, "max_soil_intrusion_cells"), 2),
+                      fixed(figure(results, run, "max_volume_ratio"), 2),
+                      fixed(figure(results, run, "inflated_particles_max"), 0), scientific(dt_min),
+                      scientific(last(results.history(run), "soil_kinetic_energy_J")),
+                      collapsed ? "Δt collapsed (< 1 % of the first step): not used" : "ok"});
   }
   md.table({"min cell [cm]", "max intrusion [mm]", "[cells]", "max V/V0", "particles at V/V0 ≥ 2", "Δt_min [s]",
             "soil kinetic energy at 0.15 s [J]", "level"},
@@ -320,12 +319,11 @@ void write_phase_reading(Markdown& md, const std::vector<Level>& levels, const s
     return is_within ? "within that level's phase range" : "larger than that level's phase range";
   };
   md.paragraph("Means over the four phases at 2, 1 and 0.5 cm: final penetration " + means(&Phases::depth_mean, 100.0) +
-               " cm (steps " + steps(&Phases::depth_mean, 100.0) + " cm), 2 ms peak " +
-               means(&Phases::peak_mean, 1.0) + " g (steps " + steps(&Phases::peak_mean, 1.0) +
-               " g). The step from 0.5 to 0.25 cm, " + fixed(100 * last_depth_step, 2) +
-               " cm in the final penetration and " + fixed(last_peak_step, 2) + " g in the peak, is " +
-               within(depth_within) + " at 0.5 cm (" + fixed(100 * finest.depth_range, 2) + " cm) and " +
-               within(peak_within) + " (" + fixed(finest.peak_range, 2) + " g)" +
+               " cm (steps " + steps(&Phases::depth_mean, 100.0) + " cm), 2 ms peak " + means(&Phases::peak_mean, 1.0) +
+               " g (steps " + steps(&Phases::peak_mean, 1.0) + " g). The step from 0.5 to 0.25 cm, " +
+               fixed(100 * last_depth_step, 2) + " cm in the final penetration and " + fixed(last_peak_step, 2) +
+               " g in the peak, is " + within(depth_within) + " at 0.5 cm (" + fixed(100 * finest.depth_range, 2) +
+               " cm) and " + within(peak_within) + " (" + fixed(finest.peak_range, 2) + " g)" +
                (depth_within || peak_within
                     ? ", so the Richardson figures below rest on single samples of the staircase."
                     : "."));

@@ -104,8 +104,8 @@ void write_verification(const StudyResults& results, StudyOutput& out) {
                     fixed(figure(results, run, "model_runs"), 0), fixed(figure(results, run, "iterations"), 0),
                     fixed(figure(results, run, "wall_time_s"), 0)});
   }
-  md.table({"forward mesh", "φ'_p [°]", "(φ'_p − 39°)/SE", "E' [kPa]", "(E' − 2500)/SE", "rms misfit [g]",
-            "model runs", "iterations", "wall time [s]"},
+  md.table({"forward mesh", "φ'_p [°]", "(φ'_p − 39°)/SE", "E' [kPa]", "(E' − 2500)/SE", "rms misfit [g]", "model runs",
+            "iterations", "wall time [s]"},
            rows);
   md.paragraph(
       "Reading: at the record's own mesh the fit should give back the true values within about two standard "

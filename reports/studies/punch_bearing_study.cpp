@@ -98,8 +98,7 @@ MeshSeries mesh_series(const StudyResults& results) {
       }
       const CsvData hist = results.history(i);
       if (hist.has("mean_pressure_kPa")) {
-        Series c{.title = std::string(kPunches[k].label) + ", R/h = " + fixed(kPunchRadius_m / h, 1),
-                 .style = "lines"};
+        Series c{.title = std::string(kPunches[k].label) + ", R/h = " + fixed(kPunchRadius_m / h, 1), .style = "lines"};
         const auto& s = hist.column("penetration_m");
         const auto& p = hist.column("mean_pressure_kPa");
         for (std::size_t r = 0; r < s.size(); ++r) {
