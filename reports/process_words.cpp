@@ -10,7 +10,7 @@ namespace {
 // One alternative per kind of reference, each on its line below:
 // - "issue" or "issues" and a number (with or without #); the possessive of "issue"; "issue:"
 //   as a parenthesised label; what it asked or said;
-// - "stop" with a whole number ("stop 0.5 s" is a time), or hyphenated before a number;
+// - "stop" with a whole number (followed by a decimal it is a time), or hyphenated before a number;
 // - a review's lettered finding; a build named by the number it preceded; whose issue it is;
 // - a numbered session, or one pointed at ("this", "several", ...); an hour named by the
 //   host's load.
