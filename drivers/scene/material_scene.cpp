@@ -194,8 +194,8 @@ std::string output_column(StateOutput output) {
   }
 }
 
-double output_value(StateOutput output, double si_value) {
-  return unit(output) == OutputUnit::radian ? si_value / kDegree : si_value;
+double output_value(StateOutput output, double value_in_si_units) {
+  return unit(output) == OutputUnit::radian ? value_in_si_units / kDegree : value_in_si_units;
 }
 
 }  // namespace ffp

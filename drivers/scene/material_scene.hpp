@@ -53,6 +53,6 @@ json initial_state_json(const MaterialState& state);
 /// A law's state output as drivers print it: the column name with its unit
 /// ("friction_angle_deg", "strain_rate_per_s") and the value in that unit.
 std::string output_column(StateOutput output);
-double output_value(StateOutput output, double si_value);
+double output_value(StateOutput output, double value_in_si_units);
 
 }  // namespace ffp

@@ -89,7 +89,7 @@ double relative_error(double value, const Extrapolation& reference) {
   return std::abs(value - reference.value) / std::abs(reference.value);
 }
 
-std::string cm(double length_m) { return fixed(100 * length_m, 2); }
+std::string in_cm(double length_m) { return fixed(100 * length_m, 2); }
 
 /// The runs: each level, then per control level pure FLIP and the tip phases.
 std::vector<RunRequest> convergence_runs(const std::filesystem::path& scenes_dir, ConvergenceRuns& where) {
@@ -100,19 +100,19 @@ std::vector<RunRequest> convergence_runs(const std::filesystem::path& scenes_dir
     return runs.size() - 1;
   };
   for (double h : kReferenceCells_m)
-    where.level.push_back(add("min cell " + cm(h) + " cm", {"mesh.min_cell_m=" + fixed(h, 4), kPicPerSecond}, h));
+    where.level.push_back(add("min cell " + in_cm(h) + " cm", {"mesh.min_cell_m=" + fixed(h, 4), kPicPerSecond}, h));
   for (std::size_t l = 0; l < kControlLevels; ++l) {
     const double h = kReferenceCells_m[l];
     const std::string mesh = "mesh.min_cell_m=" + fixed(h, 4);
     ConvergenceRuns::Controls controls{};
     controls.pure_flip =
-        add("pure FLIP, " + cm(h) + " cm", {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}, h);
+        add("pure FLIP, " + in_cm(h) + " cm", {mesh, "solver.flip_fraction=1", "output.field_times_s=[]"}, h);
     for (std::size_t k = 0; k < kTipPhases.size(); ++k) {
       const double phase = kTipPhases[k];
       // The 0.5 phase is labelled in words, as the text names it.
       const std::string label = phase == 0.5 ? "tip half a cell off, " : "tip " + fixed(phase, 2) + " cell off, ";
       controls.tip_phase[k] =
-          add(label + cm(h) + " cm",
+          add(label + in_cm(h) + " cm",
               {mesh, "mesh.tip_offset_cells=" + fixed(phase, 2), kPicPerSecond, "output.field_times_s=[]"}, h);
     }
     where.controls.push_back(controls);
@@ -159,9 +159,9 @@ void write_level_table(Markdown& md, const StudyResults& results, const Converge
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const Level& l = levels[i];
     const std::size_t run = where.level[i];
-    rows.push_back({cm(l.cell_m), fixed(figure(results, run, "particles"), 0), fixed(figure(results, run, "steps"), 0),
+    rows.push_back({in_cm(l.cell_m), fixed(figure(results, run, "particles"), 0), fixed(figure(results, run, "steps"), 0),
                     fixed(l.wall_s, 1), fixed(l.peak_g, 2), fixed(100 * relative_error(l.peak_g, refs.peak), 1),
-                    cm(l.depth_m), fixed(100 * relative_error(l.depth_m, refs.depth), 1), fixed(l.impulse_N_s, 2),
+                    in_cm(l.depth_m), fixed(100 * relative_error(l.depth_m, refs.depth), 1), fixed(l.impulse_N_s, 2),
                     fixed(100 * relative_error(l.impulse_N_s, refs.impulse), 1)});
   }
   md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "2 ms peak [g]", "error [%]",
@@ -180,7 +180,7 @@ void write_health_table(Markdown& md, const StudyResults& results, const Converg
     if (results.summary(run).empty()) continue;
     const double dt0 = figure(results, run, "dt_s"), dt_min = figure(results, run, "dt_min_s");
     const bool collapsed = std::isfinite(dt0) && std::isfinite(dt_min) && dt_min < 0.01 * dt0;
-    health.push_back({cm(kReferenceCells_m[i]), fixed(1000 * figure(results, run, "max_soil_intrusion_m"), 2),
+    health.push_back({in_cm(kReferenceCells_m[i]), fixed(1000 * figure(results, run, "max_soil_intrusion_m"), 2),
                       fixed(figure(results, run, "max_soil_intrusion_cells"), 2),
                       fixed(figure(results, run, "max_volume_ratio"), 2),
                       fixed(figure(results, run, "inflated_particles_max"), 0), scientific(dt_min),
@@ -199,7 +199,7 @@ void write_pure_flip_table(Markdown& md, const StudyResults& results, const Conv
   std::vector<std::vector<std::string>> controls;
   for (std::size_t l = 0; l < kControlLevels; ++l) {
     const std::size_t flip = where.controls[l].pure_flip;
-    controls.push_back({cm(levels[l].cell_m), cm(levels[l].depth_m), cm(figure(results, flip, "final_penetration_m")),
+    controls.push_back({in_cm(levels[l].cell_m), in_cm(levels[l].depth_m), in_cm(figure(results, flip, "final_penetration_m")),
                         scientific(last(results.history(where.level[l]), "soil_kinetic_energy_J")),
                         scientific(last(results.history(flip), "soil_kinetic_energy_J"))});
   }
@@ -230,9 +230,9 @@ void write_phase_table(Markdown& md, const std::vector<Phases>& phases) {
   std::vector<std::vector<std::string>> rows;
   for (std::size_t l = 0; l < kControlLevels; ++l) {
     const Phases& p = phases[l];
-    std::vector<std::string> row{cm(kReferenceCells_m[l])};
-    for (double x : p.depth_m) row.push_back(cm(x));
-    row.push_back(cm(p.depth_mean));
+    std::vector<std::string> row{in_cm(kReferenceCells_m[l])};
+    for (double x : p.depth_m) row.push_back(in_cm(x));
+    row.push_back(in_cm(p.depth_mean));
     row.push_back(fixed(100 * p.depth_range / p.depth_mean, 1));
     row.push_back(fixed(100 * (p.depth_m[kHalfCellPhase] - p.depth_m[0]) / p.depth_m[0], 1));
     for (double x : p.peak_g) row.push_back(fixed(x, 2));
@@ -399,16 +399,16 @@ void write_timeline_table(Markdown& md, const PenetrationAt& penetration) {
   for (double t : kCompareTimes_s) {
     const std::vector<double> z = penetration.levels(t);
     std::vector<std::string> row{fixed(1000 * t, 0)};
-    for (double x : z) row.push_back(cm(x));
+    for (double x : z) row.push_back(in_cm(x));
     bool shrinks = true;
     for (std::size_t i = 1; i < n; ++i) {
-      row.push_back(cm(z[i] - z[i - 1]));
+      row.push_back(in_cm(z[i] - z[i - 1]));
       if (i > 1) shrinks = shrinks && std::abs(z[i] - z[i - 1]) < std::abs(z[i - 1] - z[i - 2]);
     }
     const Extrapolation e = richardson(z[n - 3], z[n - 2], z[n - 1]);
     row.push_back(std::isfinite(e.order) ? fixed(e.order, 2) : "–");
     const double range = penetration.phase_range(t);
-    row.push_back(cm(range));
+    row.push_back(in_cm(range));
     timeline.push_back(row);
     still_shrinking = still_shrinking && shrinks;
     still_resolved = still_resolved && still_shrinking && std::abs(z[n - 1] - z[n - 2]) > range;
@@ -422,9 +422,9 @@ void write_timeline_table(Markdown& md, const PenetrationAt& penetration) {
       "that time." +
       reading_text(reading));
   std::vector<std::string> header{"t [ms]"};
-  for (double h : kReferenceCells_m) header.push_back("z at " + cm(h) + " cm [cm]");
+  for (double h : kReferenceCells_m) header.push_back("z at " + in_cm(h) + " cm [cm]");
   for (std::size_t i = 1; i < n; ++i)
-    header.push_back("step " + cm(kReferenceCells_m[i - 1]) + "→" + cm(kReferenceCells_m[i]));
+    header.push_back("step " + in_cm(kReferenceCells_m[i - 1]) + "→" + in_cm(kReferenceCells_m[i]));
   header.push_back("order");
   header.push_back("0.5 cm phase range [cm]");
   md.table(header, timeline);
@@ -436,7 +436,7 @@ void write_timeline_figure(StudyOutput& out, const PenetrationAt& penetration) {
   std::vector<Series> halvings;
   for (std::size_t i = 1; i < n; ++i)
     halvings.push_back(
-        {.title = cm(kReferenceCells_m[i - 1]) + " → " + cm(kReferenceCells_m[i]) + " cm", .style = "lines"});
+        {.title = in_cm(kReferenceCells_m[i - 1]) + " → " + in_cm(kReferenceCells_m[i]) + " cm", .style = "lines"});
   Series range{.title = "0.5 cm level's phase range", .style = "lines dashtype 2"};
   for (double t = 0.002; t <= kCompareTimes_s.back() + 1e-9; t += 0.002) {
     const std::vector<double> z = penetration.levels(t);
@@ -494,7 +494,7 @@ void write_error_figure(StudyOutput& out, const std::vector<Level>& levels, cons
 void write_field_figures(const StudyResults& results, const ConvergenceRuns& where, StudyOutput& out) {
   std::vector<LabelledRun> runs;
   for (std::size_t i = 0; i < kReferenceCells_m.size(); ++i)
-    runs.push_back({where.level[i], "min cell " + cm(kReferenceCells_m[i]) + " cm"});
+    runs.push_back({where.level[i], "min cell " + in_cm(kReferenceCells_m[i]) + " cm"});
   ffp_depth_profiles_figure(results, runs, "Mesh convergence", "convergence_profiles.png", out);
   out.document.paragraph(
       "The soil's mean stress p at t = 0.04 s on the 1, 0.5 and 0.25 cm levels (colours up to each map's 98th "
@@ -503,8 +503,8 @@ void write_field_figures(const StudyResults& results, const ConvergenceRuns& whe
       "with a dilatant flow, ψ = 20°, the same push has a smooth pressure bulb).");
   for (std::size_t i = 1; i < kReferenceCells_m.size(); ++i)
     include_run_figure(results, where.level[i], "plots/mean_stress_t0.040.png",
-                       "convergence_p_" + cm(kReferenceCells_m[i]) + "cm.png",
-                       "Mean stress p at t = 0.04 s, min cell " + cm(kReferenceCells_m[i]) + " cm", out);
+                       "convergence_p_" + in_cm(kReferenceCells_m[i]) + "cm.png",
+                       "Mean stress p at t = 0.04 s, min cell " + in_cm(kReferenceCells_m[i]) + " cm", out);
 }
 
 }  // namespace

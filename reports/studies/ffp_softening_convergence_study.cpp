@@ -28,7 +28,7 @@ std::vector<std::string> softening(double h, double eta) {
   return overrides;
 }
 
-std::string cm(double h) { return fixed(100 * h, 2) + " cm"; }
+std::string cm_label(double h) { return fixed(100 * h, 2) + " cm"; }
 
 }  // namespace
 
@@ -36,12 +36,12 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Mesh convergence of the softening run (SSMC φ'_p = 60°)";
   for (double h : kSofteningCells_m) {
-    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η = 8, " + cm(h), softening(h, kPaperEta)));
+    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η = 8, " + cm_label(h), softening(h, kPaperEta)));
     study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
   }
   // The same runs as the mesh-calibration study's: the cache shares them.
   for (const auto& [h, scene] : kCalibrations)
-    study.runs.push_back(scene_run(scenes_dir, scene, "calibration " + cm(h)));
+    study.runs.push_back(scene_run(scenes_dir, scene, "calibration " + cm_label(h)));
   study.runs[4].expected_wall_s = 8;  // as in the mesh-calibration study
   study.runs[5].expected_wall_s = 26;
   study.runs[6].expected_wall_s = 160;
@@ -51,7 +51,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     for (std::size_t c : {std::size_t{0}, std::size_t{2}}) {  // 1 cm is η = 8 itself
       const double eta = kPaperEta * figure(first, 4 + c, "eta") / eta_1cm;
       if (!std::isfinite(eta)) continue;
-      runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η scaled, " + cm(kCalibrations[c].first),
+      runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η scaled, " + cm_label(kCalibrations[c].first),
                                softening(kCalibrations[c].first, eta)));
       runs.back().expected_wall_s = 5.0 * std::pow(0.01 / kCalibrations[c].first, 3);
     }
@@ -84,7 +84,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     for (std::size_t i = 0; i < levels; ++i) {
       const bool has_scaled = i < 3;
       rows.push_back(
-          {cm(kSofteningCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
+          {cm_label(kSofteningCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
            fixed(figure(results, i, "wall_time_s"), 1), fixed(peak[i], 2), fixed(100 * depth[i], 2),
            has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–", has_scaled ? fixed(scaled_eta[i], 2) : "–",
            has_scaled ? fixed(scaled_peak[i], 2) : "–", has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
@@ -112,7 +112,7 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
       md.paragraph(series("Scaled η (2, 1, 0.5 cm), 2 ms peak", scaled_peak, 3, 1.0, "g") + ". " +
                    series("Scaled η, final penetration", scaled_depth, 3, 100.0, "cm") + ".");
     std::vector<LabelledRun> runs;
-    for (std::size_t i = 0; i < levels; ++i) runs.push_back({i, "η = 8, " + cm(kSofteningCells_m[i])});
+    for (std::size_t i = 0; i < levels; ++i) runs.push_back({i, "η = 8, " + cm_label(kSofteningCells_m[i])});
     ffp_depth_profiles_figure(results, runs, "Softening run, mesh convergence", "softening_convergence_profiles.png",
                               out);
   };
