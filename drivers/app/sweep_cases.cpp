@@ -18,7 +18,7 @@ using nlohmann::json;
 
 namespace {
 
-/// The scene keys that name files, relative to the scene's folder (README, Scenes): a case
+/// The scene keys that name files, relative to the scene's folder (docs/reference/scenes.md): a case
 /// scene lives in another folder, so they become absolute there.
 void make_paths_absolute(json& scene, const fs::path& scene_dir) {
   auto fix = [&](json& holder, const char* key) {
