@@ -13,6 +13,11 @@
 /// plots/deviatoric_strain_tT.TTT.png (Fig. 9 style) and plots/mean_stress_tT.TTT.png (ffp_output.hpp), and summary
 /// figures (ffp_summary.hpp). An ffp (not a cpt) run also writes record.csv and plots/record_profiles.png: its
 /// deceleration interpreted as a measured drop is (record_output.hpp).
+/// With output.localisation: history columns localised_fraction (the share of the soil particles
+/// on a face of the yield surface whose tangent has lost ellipticity), yield_face_particles,
+/// yield_edge_particles and yield_apex_particles (not evaluated); fields localised (0/1) and
+/// band_angle_deg (band normal from the r axis); summary localised_fraction_max and
+/// localised_time_s (the row where it is reached). Evaluated at the rows and fields only.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +35,7 @@
 #include "drivers/output/csv_writer.hpp"
 #include "models/math_constants.hpp"
 #include "mpm/diagnostics.hpp"
+#include "mpm/localisation_map.hpp"
 #include "mpm/parallel.hpp"
 
 namespace ffp {
@@ -55,6 +61,7 @@ struct Extremes {
   // history rows
   std::size_t disconnected = 0, inflated = 0;
   double volume_ratio = 1.0;
+  double localised_fraction = 0.0, localised_time_s = 0.0;  // with output.localisation
 };
 
 class PenetrometerJob : public Job {
@@ -106,7 +113,11 @@ class PenetrometerJob : public Job {
   /// The reaction over the base area πR²: a cone's q_c (shaft friction included), a punch's mean pressure.
   double base_area_m2() const { return kPi * std::pow(scene_.model.shape.base_radius_m, 2); }
   CsvTable history_table() const;
-  void record_row(CsvTable& history);
+  void record_row(CsvTable& history, Extremes& e);
+  mpm::LocalisationMap soil_localisation() const {
+    const mpm::Simulation& s = run_->simulation();
+    return mpm::map_localisation(s.groups[0], s.particles.stress);
+  }
   void observe_step(Extremes& e) const;
   void observe_row(Extremes& e) const;
   void write_summary(json& sum, const MpmRunResult& result, const Extremes& e, std::size_t field_files) const;
@@ -136,10 +147,13 @@ CsvTable PenetrometerJob::history_table() const {
   if (cpt()) columns.emplace_back("mean_pressure_kPa");
   if (!run_->deformable())  // the rigid body's impulse split by where it is taken (PenetrometerState)
     for (const char* c : {"cone_impulse_N_s", "cone_normal_impulse_N_s", "shaft_impulse_N_s"}) columns.emplace_back(c);
+  if (scene_.output.localisation)
+    for (const char* c : {"localised_fraction", "yield_face_particles", "yield_edge_particles", "yield_apex_particles"})
+      columns.emplace_back(c);
   return CsvTable(columns);
 }
 
-void PenetrometerJob::record_row(CsvTable& history) {
+void PenetrometerJob::record_row(CsvTable& history, Extremes& e) {
   const mpm::FfpRun& ffp = *run_;
   const mpm::Simulation& s = ffp.simulation();
   const mpm::PenetrometerState& st = ffp.state();
@@ -151,6 +165,13 @@ void PenetrometerJob::record_row(CsvTable& history) {
                          mpm::kinetic_energy_body(s, ffp.soil_body()), s.dt_s, st.impulse_N_s, ffp.soil_intrusion_m()});
   if (cpt()) row.push_back(1e-3 * sample.reaction_N / base_area_m2());
   if (!ffp.deformable()) row.insert(row.end(), {st.cone_impulse_N_s, st.cone_normal_impulse_N_s, st.shaft_impulse_N_s});
+  if (scene_.output.localisation) {
+    const mpm::LocalisationMap map = soil_localisation();
+    const double fraction = map.localised_fraction();
+    row.insert(row.end(), {fraction, static_cast<double>(map.on_face), static_cast<double>(map.on_edge),
+                           static_cast<double>(map.at_apex)});
+    if (fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
+  }
   history.add_row(row);
   samples_.push_back(sample);
 }
@@ -184,12 +205,18 @@ void PenetrometerJob::run(RunContext& context) {
   samples_.clear();
   Extremes extremes;
   MpmRunCallbacks callbacks;
-  callbacks.record_row = [&] { record_row(history); };
+  callbacks.record_row = [&] { record_row(history, extremes); };
   callbacks.after_step = [&] { observe_step(extremes); };
   callbacks.after_step_row = [&] { observe_row(extremes); };
   callbacks.write_fields = [&] {
-    fields.write(s.particles, s.time_s,
-                 {.stress_components = true, .extra = {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}});
+    ParticleFieldColumns columns{.stress_components = true,
+                                 .extra = {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}};
+    if (scene_.output.localisation) {
+      mpm::LocalisationMap map = soil_localisation();
+      columns.extra.emplace_back("localised", std::move(map.localised));
+      columns.extra.emplace_back("band_angle_deg", std::move(map.band_angle_deg));
+    }
+    fields.write(s.particles, s.time_s, columns);
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
     write_pressure_map(*run_, name_, plots);
   };
@@ -261,6 +288,10 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
   sum["disconnected_particles_max"] = e.disconnected;  // at the history rows
   sum["max_volume_ratio"] = e.volume_ratio;            // largest V/V0 of a soil particle, at the history rows
   sum["inflated_particles_max"] = e.inflated;          // most soil particles with V/V0 > 2 at one history row
+  if (scene_.output.localisation) {
+    sum["localised_fraction_max"] = e.localised_fraction;  // at the history rows
+    sum["localised_time_s"] = e.localised_time_s;
+  }
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;
   sum["penetrometer"] = ffp.deformable() ? "linear_elastic" : "rigid";

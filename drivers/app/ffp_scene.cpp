@@ -390,7 +390,16 @@ FfpScene read_ffp_scene(SceneReader& scene, PenetrometerKind kind) {
   std::sort(o.field_times_s.begin(), o.field_times_s.end());
   o.strain_colour_max = output.number("strain_colour_max", Range::positive(100.0), 0.5,
                                       Doc("top of the deviatoric-strain colour scale in the pictures"));
-  output.finish("output (history_interval_s, field_times_s, strain_colour_max)");
+  o.localisation =
+      output
+          .optional_boolean("localisation",
+                            Doc("the soil's loss of ellipticity (Rudnicki & Rice 1975) at the history rows and the "
+                                "fields: history localised_fraction, fields localised and band_angle_deg, summary "
+                                "localised_fraction_max and localised_time_s "
+                                "([outputs](../outputs.md#localisation), [theory](../theory.md#localisation))")
+                                .by_default("`false`"))
+          .value_or(false);
+  output.finish("output (history_interval_s, field_times_s, strain_colour_max, localisation)");
   scene.finish(kind == PenetrometerKind::cpt ? "a cpt scene" : "an ffp scene");
   return out;
 }

@@ -19,6 +19,9 @@ struct FfpOutput {
   double history_interval_s = 2e-4;
   std::vector<double> field_times_s;  ///< particle fields (VTU + strain PNG) at the first step reaching each
   double strain_colour_max = 0.5;     ///< top of the deviatoric-strain colour scale in the PNGs
+  /// The soil's loss of ellipticity (mpm/localisation_map.hpp) in the history rows, the fields
+  /// and the summary. Off unless asked for, so that a scene's outputs keep their columns.
+  bool localisation = false;
 };
 
 /// The bearing benchmark of a flat punch on a Tresca soil (cpt, tip flat, φ' = 0, c' > 0): the

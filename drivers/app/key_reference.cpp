@@ -169,13 +169,13 @@ std::vector<Probe> branch_probes(std::string_view kind) {
   if (kind == "ffp")
     return joined({{"ffp_reference",
                     {"ffp.tip=flat", "ffp.cone_apex_angle_deg=null", "ffp.external_force_N=10",
-                     "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005"}}},
+                     "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005", "output.localisation=true"}}},
                   material_probes("ffp_calibrated", "material."));
   if (kind == "cpt")
-    return joined(
-        {{"cpt_reference",
-          {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005"}}},
-        material_probes("cpt_reference", "material."));
+    return joined({{"cpt_reference",
+                    {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null",
+                     "soil.near_spacing_m=0.005", "output.localisation=true"}}},
+                  material_probes("cpt_reference", "material."));
   if (kind == "record")
     return {{"record_reference",
              {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null", "sensor_range_g=100", "rate_laws=null"}},

@@ -232,6 +232,15 @@ bool SceneReader::boolean(std::string_view key, bool fallback, const Doc& doc) {
   return v->get<bool>();
 }
 
+std::optional<bool> SceneReader::optional_boolean(std::string_view key, const Doc& doc) {
+  document(key, doc, "`true`, `false`", "", "none");
+  const json* v = find(key);
+  if (v == nullptr) return std::nullopt;
+  if (!v->is_boolean()) fail(key, "must be true or false, got " + type_name(*v));
+  (*echo_)[std::string(key)] = v->get<bool>();
+  return v->get<bool>();
+}
+
 std::string SceneReader::read_text(std::string_view key) {
   const json* v = find(key);
   if (v == nullptr) fail(key, "is required (a string)");

@@ -130,6 +130,9 @@ class SceneReader {
   int integer(std::string_view key, long min, long max, const Doc& doc);
   int integer(std::string_view key, long min, long max, long fallback, const Doc& doc);
   bool boolean(std::string_view key, bool fallback, const Doc& doc);
+  /// Read (and echoed) only when given: a key added after scenes were shipped keeps their
+  /// echo, hence their outputs, as they were. The Doc says what its absence means.
+  std::optional<bool> optional_boolean(std::string_view key, const Doc& doc);
   std::string text(std::string_view key, const Doc& doc);
   std::string text(std::string_view key, std::string_view fallback, const Doc& doc);
   /// A file named by the text at `key`: relative to the scene's folder unless absolute, lexically normalised.

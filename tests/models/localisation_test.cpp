@@ -80,6 +80,12 @@ TEST_CASE("the acoustic tensor is n·D^ep·n of the explicit fourth-order tangen
           for (int l = 0; l < 3; ++l) expected(j, k) += n[i] * (d(i, j, k, l) - a(i, j) * b(k, l) / chi) * n[l];
     const Eigen::Matrix3d computed = acoustic_tensor(elastic, &flow, n);
     CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
+    // The ratio the search minimises (by the determinant lemma) is det A / det A^e of this tensor.
+    const double theta = 0.4 * trial;
+    const Eigen::Vector3d in_plane(std::cos(theta), std::sin(theta), 0.0);
+    const double det_elastic = g * g * elastic.constrained_modulus();
+    CHECK(acoustic_determinant_ratio(elastic, &flow, theta) ==
+          Approx(acoustic_tensor(elastic, &flow, in_plane).determinant() / det_elastic).margin(1e-12));
   }
 }
 

@@ -1,0 +1,58 @@
+#include "mpm/localisation_map.hpp"
+
+#include <type_traits>
+
+#include "models/localisation.hpp"
+#include "models/math_constants.hpp"
+#include "models/mohr_coulomb_return.hpp"
+
+namespace ffp::mpm {
+
+namespace {
+
+/// One particle on the surface: counts and fields.
+void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, const Voigt& stress, std::size_t i,
+              LocalisationMap& map) {
+  const MohrCoulombStrength strength =
+      MohrCoulombStrength::of(p.friction_angle_rad, p.dilatancy_angle_rad, p.cohesion_Pa);
+  const MohrCoulombFlow at = mohr_coulomb_flow(stress, strength);
+  if (at.region == ReturnRegion::elastic) return;
+  if (at.region == ReturnRegion::apex) {
+    ++map.at_apex;
+    return;
+  }
+  if (at.region != ReturnRegion::plane) {
+    ++map.on_edge;
+    return;
+  }
+  ++map.on_face;
+  const Localisation found = find_localisation(elastic, at.flow);
+  if (!found.localised) return;
+  ++map.localised_count;
+  map.localised[i] = 1.0;
+  map.band_angle_deg[i] = found.band_normal_rad / kDegree;
+}
+
+}  // namespace
+
+LocalisationMap map_localisation(const MaterialGroup& group, std::span<const Voigt> stress) {
+  LocalisationMap map;
+  map.localised.assign(stress.size(), 0.0);
+  map.band_angle_deg.assign(stress.size(), 0.0);
+  std::visit(
+      [&](const auto& law) {
+        using Law = std::decay_t<decltype(law)>;
+        using State = typename Law::State;
+        if constexpr (requires(const State& s) { law.current_strength(s, 0.0); }) {
+          const auto& states = std::get<std::vector<State>>(group.states);
+          for (std::size_t k = 0; k < group.size(); ++k) {
+            const std::size_t i = group.begin + k;
+            evaluate(law.elastic(), law.current_strength(states[k], mean_pressure(stress[i])), stress[i], i, map);
+          }
+        }
+      },
+      group.law);
+  return map;
+}
+
+}  // namespace ffp::mpm

@@ -1,0 +1,65 @@
+#include <cmath>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "models/localisation.hpp"
+#include "models/math_constants.hpp"
+#include "mpm/localisation_map.hpp"
+
+using namespace ffp;
+using namespace ffp::mpm;
+
+namespace {
+
+/// Principal values s1 ≥ s3 in the r–z plane (s1 along (cos ω, sin ω)) and θθ = s2.
+Voigt in_plane_stress(double s1, double s2, double s3, double omega) {
+  const double c = std::cos(omega), s = std::sin(omega);
+  Voigt v = Voigt::Zero();
+  v << s1 * c * c + s3 * s * s, s1 * s * s + s3 * c * c, s2, (s1 - s3) * s * c, 0.0, 0.0;
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("the localisation map flags the face particles of a non-associated sand and skips the others",
+          "[mpm][localisation]") {
+  const double phi = 39.0 * kDegree;
+  const MohrCoulombParameters sand{ElasticConstants{2.5e6, 0.33}, phi, 0.0, 0.0};
+  MaterialGroup group("sand", MohrCoulomb(sand), 1500.0);
+  // Particle 0 belongs to another group; the sand holds particles 1–4.
+  group.begin = 1;
+  group.end = 5;
+  group.states = initial_states(group.law, group.size());
+  const double s3 = -10e3, s1 = s3 * (1.0 - std::sin(phi)) / (1.0 + std::sin(phi)), omega = 0.3;
+  const std::vector<Voigt> stress = {
+      in_plane_stress(s1, s3, s3, omega),                   // not the group's: ignored
+      in_plane_stress(2.0 * s1, s1 + 0.5 * s3, s3, omega),  // σ1 more compressive: inside the surface
+      in_plane_stress(s1, 0.5 * (s1 + s3), s3, omega),      // on the face, θθ intermediate
+      in_plane_stress(s1, s1, s3, omega),                   // compression edge
+      Voigt::Zero(),                                        // apex (c' = 0)
+  };
+  const LocalisationMap map = map_localisation(group, stress);
+  CHECK(map.on_face == 1);
+  CHECK(map.on_edge == 1);
+  CHECK(map.at_apex == 1);
+  CHECK(map.localised_count == 1);
+  CHECK(map.localised_fraction() == 1.0);
+  CHECK(map.localised == std::vector<double>{0.0, 0.0, 1.0, 0.0, 0.0});
+  // The band of the face particle is the point diagnostic's.
+  const MohrCoulombFlow at = mohr_coulomb_flow(stress[2], MohrCoulombStrength::of(phi, 0.0, 0.0));
+  CHECK(map.band_angle_deg[2] == Approx(find_localisation(sand.elastic, at.flow).band_normal_rad / kDegree));
+  CHECK(map.band_angle_deg[2] >= 0.0);
+  CHECK(map.band_angle_deg[2] < 180.0);
+}
+
+TEST_CASE("a linear elastic group never localises", "[mpm][localisation]") {
+  MaterialGroup group("body", LinearElastic(ElasticConstants{2e11, 0.3}), 7800.0);
+  group.begin = 0;
+  group.end = 1;
+  group.states = initial_states(group.law, 1);
+  const std::vector<Voigt> stress = {Voigt::Constant(-1e6)};
+  const LocalisationMap map = map_localisation(group, stress);
+  CHECK(map.on_face + map.on_edge + map.at_apex + map.localised_count == 0);
+  CHECK(map.localised_fraction() == 0.0);
+}
