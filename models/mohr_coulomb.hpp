@@ -18,6 +18,14 @@ struct MohrCoulombParameters {
   double cohesion_Pa = 0.0;          ///< c' (0 for sand)
 };
 
+/// How fast a softening law's strength falls with its plastic deviatoric strain κ = ε_d^p at a
+/// state: dφ'/dκ and dc'/dκ (≤ 0 while softening; 0 for a perfectly plastic law). ψ's fall moves
+/// the flow direction, not the surface, so only these enter the hardening modulus.
+struct StrengthSlopes {
+  double friction_rad = 0.0;  ///< dφ'/dκ
+  double cohesion_Pa = 0.0;   ///< dc'/dκ
+};
+
 class MohrCoulomb {
  public:
   struct State {};  // perfectly plastic: no internal variables
@@ -46,6 +54,7 @@ class MohrCoulomb {
   }
   /// Perfectly plastic: the strength is the parameters' at every state.
   MohrCoulombParameters current_strength(const State&, double) const { return parameters_; }
+  StrengthSlopes strength_slopes(const State&, double) const { return {}; }
   /// Nothing to report beside the stress (the strength never changes).
   static std::span<const StateOutput> outputs() { return {}; }
   double output(const State&, double, StateOutput) const {

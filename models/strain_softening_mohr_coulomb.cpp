@@ -91,6 +91,15 @@ MohrCoulombParameters StrainSofteningMohrCoulomb::current_strength(const State& 
   return out;
 }
 
+StrengthSlopes StrainSofteningMohrCoulomb::strength_slopes(const State& state, double mean_pressure_Pa) const {
+  const StrainSofteningParameters& p = parameters_;
+  const double eta = p.softening_factor;
+  const double decay = std::exp(-eta * state.plastic_deviatoric_strain);
+  // d/dκ of x_r + (x_p − x_r) exp(−η κ) (Yerro et al. 2016): −η (x_p − x_r) exp(−η κ).
+  return {-eta * (peaks(state, mean_pressure_Pa).friction_rad - p.friction_residual_rad) * decay,
+          -eta * (p.cohesion_peak_Pa - p.cohesion_residual_Pa) * decay};
+}
+
 double StrainSofteningMohrCoulomb::output(const State& state, double mean_pressure_Pa, StateOutput output) const {
   switch (output) {
     case StateOutput::plastic_deviatoric_strain:

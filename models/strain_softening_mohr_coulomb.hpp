@@ -66,6 +66,9 @@ class StrainSofteningMohrCoulomb {
 
   /// The strength (φ', c', ψ) a state currently has at mean pressure p'.
   MohrCoulombParameters current_strength(const State& state, double mean_pressure_Pa) const;
+  /// dφ'/dκ and dc'/dκ at that state: the decay law differentiated at the current peaks
+  /// (the rate law's φ'_p held at the state's rate, Bolton's ψ_p at p').
+  StrengthSlopes strength_slopes(const State& state, double mean_pressure_Pa) const;
 
   /// dt_s > 0 feeds the rate law; dt_s ≤ 0 leaves the smoothed rate as it was.
   ReturnRegion update(Voigt& stress, const Voigt& strain_increment, State& state, double dt_s) const;

@@ -11,11 +11,11 @@ namespace ffp::mpm {
 namespace {
 
 /// One particle on the surface: counts and fields.
-void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, const Voigt& stress, std::size_t i,
-              LocalisationMap& map) {
+void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, const StrengthSlopes& slopes,
+              const Voigt& stress, std::size_t i, LocalisationMap& map) {
   const MohrCoulombStrength strength =
       MohrCoulombStrength::of(p.friction_angle_rad, p.dilatancy_angle_rad, p.cohesion_Pa);
-  const MohrCoulombFlow at = mohr_coulomb_flow(stress, strength);
+  const MohrCoulombFlow at = mohr_coulomb_flow(stress, strength, slopes);
   if (at.region == ReturnRegion::elastic) return;
   if (at.region == ReturnRegion::apex) {
     ++map.at_apex;
@@ -43,11 +43,16 @@ LocalisationMap map_localisation(const MaterialGroup& group, std::span<const Voi
       [&](const auto& law) {
         using Law = std::decay_t<decltype(law)>;
         using State = typename Law::State;
-        if constexpr (requires(const State& s) { law.current_strength(s, 0.0); }) {
+        if constexpr (requires(const State& s) {
+                        law.current_strength(s, 0.0);
+                        law.strength_slopes(s, 0.0);
+                      }) {
           const auto& states = std::get<std::vector<State>>(group.states);
           for (std::size_t k = 0; k < group.size(); ++k) {
             const std::size_t i = group.begin + k;
-            evaluate(law.elastic(), law.current_strength(states[k], mean_pressure(stress[i])), stress[i], i, map);
+            const double p = mean_pressure(stress[i]);
+            evaluate(law.elastic(), law.current_strength(states[k], p), law.strength_slopes(states[k], p), stress[i], i,
+                     map);
           }
         }
       },

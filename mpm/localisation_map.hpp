@@ -25,8 +25,8 @@ struct LocalisationMap {
 /// The map over particles [group.begin, group.end) of `stress` (absolute indices; the
 /// arrays are sized to `stress`, 0 outside the group). A law without a Mohr–Coulomb
 /// surface (linear elastic) never localises. Each particle's current φ', ψ, c' and the
-/// perfectly plastic tangent (H = 0): for a softening law this leaves out the softening
-/// modulus, which only widens the localised set, so the map is its lower bound there.
+/// law's hardening modulus at its state: 0 for Mohr–Coulomb, the softening modulus
+/// H < 0 of a strain-softening law (models/localisation.hpp).
 LocalisationMap map_localisation(const MaterialGroup& group, std::span<const Voigt> stress);
 
 }  // namespace ffp::mpm

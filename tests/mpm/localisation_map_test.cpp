@@ -5,6 +5,7 @@
 
 #include "models/localisation.hpp"
 #include "models/math_constants.hpp"
+#include "models/strain_softening_mohr_coulomb.hpp"
 #include "mpm/localisation_map.hpp"
 
 using namespace ffp;
@@ -62,4 +63,33 @@ TEST_CASE("a linear elastic group never localises", "[mpm][localisation]") {
   const LocalisationMap map = map_localisation(group, stress);
   CHECK(map.on_face + map.on_edge + map.at_apex + map.localised_count == 0);
   CHECK(map.localised_fraction() == 0.0);
+}
+
+// θθ the major compression: the perfectly plastic face stays elliptic (H_crit ≈ −0.91 G,
+// models/localisation tests); a sand softening fast enough there localises.
+TEST_CASE("the localisation map takes a softening sand's hardening modulus", "[mpm][localisation]") {
+  const ElasticConstants elastic{2.5e6, 0.33};
+  const double phi = 39.0 * kDegree, s3 = -100e3, s1 = s3 * (1.0 - std::sin(phi)) / (1.0 + std::sin(phi));
+  const std::vector<Voigt> stress = {in_plane_stress(s1, s3, 0.5 * (s1 + s3), 0.3)};
+  auto map_of = [&](MaterialLaw law) {
+    MaterialGroup group("sand", std::move(law), 1500.0);
+    group.begin = 0;
+    group.end = 1;
+    group.states = initial_states(group.law, 1);
+    return map_localisation(group, stress);
+  };
+  StrainSofteningParameters softening;
+  softening.elastic = elastic;
+  softening.friction_peak_rad = phi;
+  softening.friction_residual_rad = 32.0 * kDegree;
+  // κ = 0: H = (2/√3)(σ1 + σ3) cos φ' η (φ'_p − φ'_r) = −1.35e6 Pa at η = 100, below H_crit = −0.85e6 Pa.
+  softening.softening_factor = 100.0;
+  const LocalisationMap perfect = map_of(MohrCoulomb(MohrCoulombParameters{elastic, phi, 0.0, 0.0}));
+  const LocalisationMap softened = map_of(StrainSofteningMohrCoulomb(softening));
+  CHECK(perfect.on_face == 1);
+  CHECK(perfect.localised_count == 0);
+  CHECK(softened.on_face == 1);
+  CHECK(softened.localised_count == 1);
+  softening.softening_factor = 30.0;  // H = −0.40e6 Pa: above H_crit
+  CHECK(map_of(StrainSofteningMohrCoulomb(softening)).localised_count == 0);
 }
