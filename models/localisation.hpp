@@ -20,8 +20,10 @@
 /// four zeros in [0, π): r has at most two local minima there. A 1° sampling
 /// therefore brackets the global minimum's basin unless two minima lie within 2°
 /// of each other, in which case their values differ by at most |r''|(1°)²/2
-/// (|r''| ≤ 16 times the harmonics' amplitude, < 5e-3 of it); golden-section search
-/// in the bracket, where r is unimodal, then converges to the minimum.
+/// (|r''| ≤ 16 times the harmonics' amplitude, < 5e-3 of it). In the bracket, where r
+/// is unimodal, Newton's steps on r' = 0 (kept inside by bisection; golden section where
+/// the ends do not bracket a minimum) converge to it. The five harmonics are formed once
+/// per point, so the 180 samples cost a few multiplications each.
 ///
 /// r is affine in the H-free term t(n) = G (b·n)·(A^e)⁻¹(a·n): r = 1 − t/(Gχ). The search
 /// maximises t, which gives Rudnicki & Rice's critical hardening modulus

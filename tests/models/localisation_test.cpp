@@ -90,6 +90,34 @@ TEST_CASE("the acoustic tensor is n·D^ep·n of the explicit fourth-order tangen
   }
 }
 
+// The search works on r's harmonics (0, 2θ, 4θ) formed once per point; the ratio at one θ is
+// the determinant lemma's vector form, checked above against det A. A dense scan of the
+// latter lies above the search's minimum by at most r''δ²/8 (δ = 0.01°).
+TEST_CASE("the search's minimum is the least ratio of a dense scan of directions", "[localisation]") {
+  std::mt19937_64 rng(5);
+  const ElasticConstants elastic = elastic_with(0.27);
+  const double g = elastic.shear_modulus();
+  for (int trial = 0; trial < 20; ++trial) {
+    PlasticFlow flow{random_voigt(rng, 1.0), random_voigt(rng, 1.0), 0.0};
+    const Voigt dm = ElasticStiffness::of(elastic).stress_increment(flow.flow_direction);
+    flow.hardening_modulus_Pa = 2.0 * g - contract(flow.yield_normal, dm);  // χ = 2G
+    const Localisation found = find_localisation(elastic, flow);
+    double scanned = 1e300;
+    const int n = 18000;
+    for (int k = 0; k < n; ++k) scanned = std::min(scanned, acoustic_determinant_ratio(elastic, &flow, k * kPi / n));
+    double top = -1e300;
+    for (int k = 0; k < n; k += 100) top = std::max(top, acoustic_determinant_ratio(elastic, &flow, k * kPi / n));
+    INFO("minimum " << found.determinant_ratio << ", scan " << scanned << ", range " << top - scanned
+                    << ", scan above by " << scanned - found.determinant_ratio);
+    CHECK(found.determinant_ratio <= scanned + 1e-12);
+    // |r''| ≤ 4|A2| + 16|A4|, and a harmonic's amplitude is at most twice the largest
+    // |r − midrange|, i.e. the range: the scan lies above the minimum by at most 20 × range × δ²/8.
+    CHECK(found.determinant_ratio >= scanned - 20.0 * (top - scanned) * std::pow(kPi / n, 2) / 8.0);
+    CHECK(acoustic_determinant_ratio(elastic, &flow, found.band_normal_rad) ==
+          Approx(found.determinant_ratio).margin(1e-12));
+  }
+}
+
 TEST_CASE("an elastic tangent never localises: det A(θ) = det A^e > 0 for every θ", "[localisation]") {
   for (double nu : {0.0, 0.23, 0.33, 0.49}) {
     const ElasticConstants elastic = elastic_with(nu);
