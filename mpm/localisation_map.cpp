@@ -19,16 +19,20 @@ void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, c
   if (at.region == ReturnRegion::elastic) return;
   if (at.region == ReturnRegion::apex) {
     ++map.at_apex;
+    map.place[i] = YieldPlace::apex;
     return;
   }
   if (at.region != ReturnRegion::plane) {
     ++map.on_edge;
+    map.place[i] = YieldPlace::edge;
     return;
   }
   ++map.on_face;
+  map.place[i] = YieldPlace::face;
   const Localisation found = find_localisation(elastic, at.flow);
   if (!found.localised) return;
   ++map.localised_count;
+  map.place[i] = YieldPlace::localised;
   map.localised[i] = 1.0;
   map.band_angle_deg[i] = found.band_normal_rad / kDegree;
 }
@@ -37,6 +41,7 @@ void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, c
 
 LocalisationMap map_localisation(const MaterialGroup& group, std::span<const Voigt> stress) {
   LocalisationMap map;
+  map.place.assign(stress.size(), YieldPlace::inside);
   map.localised.assign(stress.size(), 0.0);
   map.band_angle_deg.assign(stress.size(), 0.0);
   std::visit(

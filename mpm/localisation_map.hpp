@@ -11,7 +11,11 @@
 
 namespace ffp::mpm {
 
+/// Where a particle's stress sits on its Mohr–Coulomb surface, and whether it has localised.
+enum class YieldPlace : unsigned char { inside, face, edge, apex, localised };
+
 struct LocalisationMap {
+  std::vector<YieldPlace> place;       ///< one per particle (`inside` outside the group)
   std::vector<double> localised;       ///< 1 where det A ≤ 0 (rounding aside), else 0; one per particle
   std::vector<double> band_angle_deg;  ///< band normal from the r axis, [0°, 180°), where localised; else 0
   std::size_t on_face = 0;             ///< particles on a face of the Mohr–Coulomb surface (evaluated)

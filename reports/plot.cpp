@@ -82,7 +82,8 @@ void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream
   script << "unset logscale x\nunset logscale y\nset yrange [*:*] noreverse\n";
   script << (map.equal_axes ? "set size ratio -1\n" : "set size noratio\n");
   script << "set cblabel " << gnuplot_quoted(map.colour_label) << "\n";
-  script << "set palette rgbformulae 33,13,10\n";
+  script << "set palette " << map.palette << "\n";
+  if (!map.colour_tics.empty()) script << "set cbtics " << map.colour_tics << "\n";
   if (map.colour_max > map.colour_min)
     script << "set cbrange [" << map.colour_min << ":" << map.colour_max << "]\n";
   else
@@ -109,6 +110,7 @@ void write_colour_panel(std::ostream& script, const ColourMap& map, std::ostream
     ++block;
   }
   script << "\nset size noratio\n";
+  if (!map.colour_tics.empty()) script << "set cbtics autofreq\n";
 }
 
 /// The queue of the PlotBatch alive on this thread, if any.

@@ -43,6 +43,10 @@ struct ColourMap {
   double point_size = 0.4;
   bool equal_axes = true;
   double colour_min = 0.0, colour_max = 0.0;  ///< both 0: automatic range
+  /// gnuplot's `set palette …` and `set cbtics …` arguments: a continuous scale by default;
+  /// categories take `defined (…)` steps with their names as tics.
+  std::string palette = "rgbformulae 33,13,10";
+  std::string colour_tics = "";  ///< "" : gnuplot's own
   int width_px = 700;
   int height_px = 700;
 };

@@ -17,7 +17,8 @@
 /// on a face of the yield surface whose tangent has lost ellipticity), yield_face_particles,
 /// yield_edge_particles and yield_apex_particles (not evaluated); fields localised (0/1) and
 /// band_angle_deg (band normal from the r axis); summary localised_fraction_max and
-/// localised_time_s (the row where it is reached). Evaluated at the rows and fields only.
+/// localised_time_s (the row where it is reached); plots/localisation.png (share and counts
+/// against time) and plots/localisation_tT.TTT.png (the map). Evaluated at the rows and fields only.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -136,6 +137,7 @@ class PenetrometerJob : public Job {
   double initial_dt_s_;
   mpm::Diagnostics initial_energy_, initial_penetrometer_energy_;
   std::vector<FfpSample> samples_;
+  std::vector<LocalisationRow> localisation_rows_;  ///< with output.localisation
 };
 
 CsvTable PenetrometerJob::history_table() const {
@@ -170,6 +172,9 @@ void PenetrometerJob::record_row(CsvTable& history, Extremes& e) {
     const double fraction = map.localised_fraction();
     row.insert(row.end(), {fraction, static_cast<double>(map.on_face), static_cast<double>(map.on_edge),
                            static_cast<double>(map.at_apex)});
+    localisation_rows_.push_back({s.time_s, fraction, static_cast<double>(map.on_face),
+                                  static_cast<double>(map.localised_count),
+                                  static_cast<double>(map.on_edge + map.at_apex)});
     if (fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
   }
   history.add_row(row);
@@ -203,6 +208,7 @@ void PenetrometerJob::run(RunContext& context) {
   fs::create_directories(plots);
   CsvTable history = history_table();
   samples_.clear();
+  localisation_rows_.clear();
   Extremes extremes;
   MpmRunCallbacks callbacks;
   callbacks.record_row = [&] { record_row(history, extremes); };
@@ -213,6 +219,7 @@ void PenetrometerJob::run(RunContext& context) {
                                  .extra = {{"plastic_deviatoric_strain", plastic_deviatoric_strain(s)}}};
     if (scene_.output.localisation) {
       mpm::LocalisationMap map = soil_localisation();
+      write_localisation_map(*run_, name_, map, plots);
       columns.extra.emplace_back("localised", std::move(map.localised));
       columns.extra.emplace_back("band_angle_deg", std::move(map.band_angle_deg));
     }
@@ -335,6 +342,7 @@ void PenetrometerJob::write_plots(const fs::path& plots) const {
   } else {
     write_ffp_plots(samples_, name_, plots);
   }
+  if (scene_.output.localisation) write_localisation_plot(localisation_rows_, name_, plots);
 }
 
 }  // namespace

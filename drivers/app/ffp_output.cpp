@@ -49,9 +49,13 @@ Plot line_plot(const std::vector<double>& x, const std::vector<double>& y, const
 }
 
 /// The soil's particles coloured by `values` (one per soil particle), the outline on
-/// top, colours from 0 to colour_max, written to `png`.
+/// top, colours from 0 to colour_max (continuous unless `categories`), written to `png`.
+struct Categories {
+  std::string palette, tics;
+};
 void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std::string& colour_label,
-                    std::vector<double> values, double colour_max, const fs::path& png) {
+                    std::vector<double> values, double colour_max, const fs::path& png,
+                    const Categories* categories = nullptr) {
   const mpm::Simulation& s = run.simulation();
   const mpm::Particles& P = s.particles;
   const mpm::MaterialGroup& soil = s.groups[0];
@@ -71,6 +75,7 @@ void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std:
   map.colour_min = 0.0;
   map.colour_max = colour_max;
   map.point_size = 0.3;
+  if (categories != nullptr) map.palette = categories->palette, map.colour_tics = categories->tics;
   write_png(map, png);
 }
 
@@ -114,6 +119,56 @@ void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const f
   }
   write_soil_map(run, map_title(run, name, "mean stress p"), "p (kPa)", std::move(p_kPa), top > 0.0 ? top : 1.0,
                  plots / map_file("mean_stress", s.time_s));
+}
+
+void write_localisation_map(const mpm::FfpRun& run, const std::string& name, const mpm::LocalisationMap& map,
+                            const fs::path& plots) {
+  const mpm::Simulation& s = run.simulation();
+  const mpm::MaterialGroup& soil = s.groups[0];
+  // One colour per place, at the middle of its unit step of the palette.
+  std::vector<double> place;
+  for (std::size_t i = soil.begin; i < soil.end; ++i) {
+    switch (map.place[i]) {
+      case mpm::YieldPlace::inside:
+        place.push_back(0.5);
+        break;
+      case mpm::YieldPlace::face:
+        place.push_back(1.5);
+        break;
+      case mpm::YieldPlace::edge:
+      case mpm::YieldPlace::apex:
+        place.push_back(2.5);
+        break;
+      case mpm::YieldPlace::localised:
+        place.push_back(3.5);
+        break;
+    }
+  }
+  const Categories places{
+      "defined (0 '#d0d0d0', 1 '#d0d0d0', 1 '#4575b4', 2 '#4575b4', 2 '#fdae61', 3 '#fdae61', 3 '#d73027', "
+      "4 '#d73027')",
+      "('elastic' 0.5, 'on a face' 1.5, 'edge/apex' 2.5, 'localised' 3.5)"};
+  write_soil_map(run, map_title(run, name, "loss of ellipticity"), "", std::move(place), 4.0,
+                 plots / map_file("localisation", s.time_s), &places);
+}
+
+void write_localisation_plot(std::span<const LocalisationRow> rows, const std::string& name, const fs::path& plots) {
+  std::vector<double> t, fraction, face, localised, edge_or_apex;
+  for (const LocalisationRow& r : rows) {
+    t.push_back(r.time_s);
+    fraction.push_back(r.fraction);
+    face.push_back(r.face);
+    localised.push_back(r.localised);
+    edge_or_apex.push_back(r.edge_or_apex);
+  }
+  Plot counts = line_plot(t, face, "time (s)", "soil particles", "yielding particles", "on a face (evaluated)");
+  counts.series.push_back({t, localised, "localised"});
+  counts.series.push_back({t, edge_or_apex, "on an edge or at the apex (not evaluated)"});
+  counts.key_position = "top right";
+  write_png_stack({line_plot(t, fraction, "time (s)", "localised share",
+                             name + ": localised share of the particles on a face", name),
+                   counts},
+                  plots / "localisation.png");
 }
 
 void write_ffp_plots(std::span<const FfpSample> samples, const std::string& name, const fs::path& plots) {

@@ -8,6 +8,7 @@
 
 #include "drivers/app/ffp_summary.hpp"
 #include "mpm/ffp_model.hpp"
+#include "mpm/localisation_map.hpp"
 
 namespace ffp {
 
@@ -20,6 +21,22 @@ void write_strain_map(const mpm::FfpRun& run, const std::string& name, double co
 /// plots/mean_stress_tT.TTT.png, coloured from 0 to the 98th percentile of p: the
 /// pattern of the pressure around the cone (the bands docs/verification.md#mesh-convergence describes).
 void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const std::filesystem::path& plots);
+
+/// With output.localisation: the soil's particles by where their stress sits (inside the
+/// yield surface, on a face and elliptic, on an edge or at the apex and not evaluated,
+/// localised) with the outline, plots/localisation_tT.TTT.png.
+void write_localisation_map(const mpm::FfpRun& run, const std::string& name, const mpm::LocalisationMap& map,
+                            const std::filesystem::path& plots);
+
+/// One history row of the localisation: the localised share of the particles on a face,
+/// and the counts.
+struct LocalisationRow {
+  double time_s, fraction, face, localised, edge_or_apex;
+};
+/// The localised share against time over the counts (on a face, localised, on an edge or
+/// at the apex): plots/localisation.png.
+void write_localisation_plot(std::span<const LocalisationRow> rows, const std::string& name,
+                             const std::filesystem::path& plots);
 
 /// Fig. 7 (plots/time_histories.png: penetration, velocity, deceleration, reaction against time) and
 /// Fig. 8b,c (plots/depth_profiles.png: velocity and deceleration against depth).

@@ -17,7 +17,7 @@ Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
   study.title = "Summary: the paper and the experiment against ours";
   // The calibrated model is fed the η its calibration finds, on the FFP's own 1 cm cells
   // (paper section 4.2), not a number copied into a scene.
-  study.runs = {scene_run(scenes_dir, "ffp_reference.json", "rigid FFP"),
+  study.runs = {reference_drop_run(scenes_dir, "rigid FFP"),
                 scene_run(scenes_dir, "ffp_reference.json", "φ'_p = 60°", paper_softening_sand("8")),
                 scene_run(scenes_dir, "calibration_dr15_mpm_1cm.json", "calibration, MPM specimen 1 cm")};
   study.follow_up = [scenes_dir](const StudyResults& first) -> std::vector<RunRequest> {

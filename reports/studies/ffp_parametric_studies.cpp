@@ -12,6 +12,8 @@ namespace ffp {
 namespace {
 
 constexpr const char* kReference = "ffp_reference.json";
+// ffp_reference.json's own E' and δ: those points of the sweeps are the reference drop itself.
+constexpr int kReferenceE_kPa = 2500, kReferenceDelta_deg = 20;
 
 /// The SSMC of sections 5.4–5.5 as overrides of the MC reference scene.
 std::vector<std::string> ssmc_overrides(double phi_peak_deg, double phi_residual_deg, double psi_peak_deg) {
@@ -94,9 +96,11 @@ Study ffp_compressibility_study(const std::filesystem::path& scenes_dir) {
 Study ffp_stiffness_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Sand stiffness (paper section 5.2, Figs. 8–9)";
-  for (int e : {1000, 2500, 5000, 7500, 10000})
-    study.runs.push_back(scene_run(scenes_dir, kReference, "E' = " + std::to_string(e) + " kPa",
-                                   {"material.E_kPa=" + std::to_string(e)}));
+  for (int e : {1000, kReferenceE_kPa, 5000, 7500, 10000}) {
+    const std::string label = "E' = " + std::to_string(e) + " kPa", value = "material.E_kPa=" + std::to_string(e);
+    study.runs.push_back(e == kReferenceE_kPa ? reference_drop_run(scenes_dir, label, {value})
+                                              : scene_run(scenes_dir, kReference, label, {value}));
+  }
   study.write = [runs = all_runs(study)](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;
     md.paragraph(
@@ -122,9 +126,11 @@ Study ffp_stiffness_study(const std::filesystem::path& scenes_dir) {
 Study ffp_contact_friction_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Contact friction angle (paper section 5.3, Fig. 10)";
-  for (int d : {20, 25, 30, 35})
-    study.runs.push_back(scene_run(scenes_dir, kReference, "δ = " + std::to_string(d) + "°",
-                                   {"contact.delta_deg=" + std::to_string(d)}));
+  for (int d : {kReferenceDelta_deg, 25, 30, 35}) {
+    const std::string label = "δ = " + std::to_string(d) + "°", value = "contact.delta_deg=" + std::to_string(d);
+    study.runs.push_back(d == kReferenceDelta_deg ? reference_drop_run(scenes_dir, label, {value})
+                                                  : scene_run(scenes_dir, kReference, label, {value}));
+  }
   study.runs.push_back(scene_run(scenes_dir, "ffp_rough.json", "fully rough"));
   study.write = [runs = all_runs(study)](const StudyResults& results, StudyOutput& out) {
     auto& md = out.document;

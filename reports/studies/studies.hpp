@@ -18,6 +18,7 @@ Study ffp_rate_factor_study(const std::filesystem::path& scenes_dir);
 Study ffp_convergence_study(const std::filesystem::path& scenes_dir);
 Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir);
 Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir);
+Study ffp_localisation_study(const std::filesystem::path& scenes_dir);
 Study ffp_chamber_study(const std::filesystem::path& scenes_dir);
 Study punch_bearing_study(const std::filesystem::path& scenes_dir);
 Study inverse_study(const std::filesystem::path& scenes_dir);

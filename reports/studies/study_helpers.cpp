@@ -44,6 +44,12 @@ RunRequest scene_run(const fs::path& scenes_dir, const std::string& scene_file, 
   return RunRequest{label, scenes_dir / scene_file, std::move(overrides)};
 }
 
+RunRequest reference_drop_run(const fs::path& scenes_dir, const std::string& label,
+                              std::vector<std::string> overrides) {
+  overrides.emplace_back("output.localisation=true");
+  return scene_run(scenes_dir, "ffp_reference.json", label, std::move(overrides));
+}
+
 Extrapolation richardson(double coarse, double medium, double fine) {
   const double a = coarse - medium, b = medium - fine;
   if (std::isfinite(a) && std::isfinite(b) && a * b > 0 && std::abs(b) < std::abs(a)) {

@@ -20,6 +20,14 @@ std::string scientific(double value, int digits = 2);
 RunRequest scene_run(const std::filesystem::path& scenes_dir, const std::string& scene_file, const std::string& label,
                      std::vector<std::string> overrides = {});
 
+/// The reference drop, data/scenes/ffp_reference.json as shipped (`overrides` only restating its
+/// own values), with the soil's localisation written (output.localisation: the run's other
+/// outputs are the same bits with it). Several studies ask for it (the summary, E' = 2500 kPa,
+/// δ = 20°, the localisation study): through this request their keys agree and the cache runs
+/// it once (tests/reports/report_runs_test.cpp).
+RunRequest reference_drop_run(const std::filesystem::path& scenes_dir, const std::string& label,
+                              std::vector<std::string> overrides = {});
+
 /// Linear interpolation of y(x) on a table sorted by x (NaN outside).
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
 

@@ -3,11 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "ffp_test_support.hpp"
+#include "reports/plot.hpp"
 
 using namespace ffp;
 using namespace ffp::test;
@@ -66,4 +68,10 @@ TEST_CASE("reference FFP on 2 cm with output.localisation: the sheared sand has 
   const std::string vtu((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   for (const char* name : {"localised", "band_angle_deg"})
     CHECK(vtu.find(std::string("Name=\"") + name + "\"") != std::string::npos);
+  // The share against time and the map at the field time, as PNGs (none without gnuplot).
+  for (const char* png : {"localisation.png", "localisation_t0.030.png"}) {
+    INFO(png);
+    CHECK(std::filesystem::exists(scratch.path() / "on" / "plots" / png) == gnuplot_available());
+    CHECK_FALSE(std::filesystem::exists(scratch.path() / "off" / "plots" / png));
+  }
 }

@@ -47,6 +47,8 @@ TEST_CASE("the localisation map flags the face particles of a non-associated san
   CHECK(map.localised_count == 1);
   CHECK(map.localised_fraction() == 1.0);
   CHECK(map.localised == std::vector<double>{0.0, 0.0, 1.0, 0.0, 0.0});
+  CHECK(map.place == std::vector<YieldPlace>{YieldPlace::inside, YieldPlace::inside, YieldPlace::localised,
+                                             YieldPlace::edge, YieldPlace::apex});
   // The band of the face particle is the point diagnostic's.
   const MohrCoulombFlow at = mohr_coulomb_flow(stress[2], MohrCoulombStrength::of(phi, 0.0, 0.0));
   CHECK(map.band_angle_deg[2] == Approx(find_localisation(sand.elastic, at.flow).band_normal_rad / kDegree));

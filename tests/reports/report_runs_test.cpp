@@ -1,0 +1,29 @@
+// The report's runs as its studies ask for them: the run cache runs equal scenes once,
+// so a study that asks for the reference drop differently would run its physics twice.
+#include <filesystem>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "reports/run_pool.hpp"
+#include "reports/studies/study_helpers.hpp"
+#include "reports/study.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("the report runs the shipped reference drop once, with its localisation output", "[reports]") {
+  const fs::path scenes = fs::path(FFP_SOURCE_DIR) / "data" / "scenes";
+  const std::string plain = ffp::run_key(ffp::scene_run(scenes, "ffp_reference.json", "plain"), "v");
+  const std::string drop = ffp::run_key(ffp::reference_drop_run(scenes, "drop"), "v");
+  REQUIRE(plain != drop);
+  int asking = 0;
+  for (const ffp::Study& study : ffp::validation_studies(scenes))
+    for (const ffp::RunRequest& run : study.runs) {
+      INFO(study.title << ": " << run.label);
+      const std::string key = ffp::run_key(run, "v");
+      CHECK(key != plain);
+      asking += key == drop;
+    }
+  // The summary's reference drop, the localisation study, E' = 2500 kPa and δ = 20°.
+  CHECK(asking == 4);
+}
