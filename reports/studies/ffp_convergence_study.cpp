@@ -159,9 +159,10 @@ void write_level_table(Markdown& md, const StudyResults& results, const Converge
   for (std::size_t i = 0; i < levels.size(); ++i) {
     const Level& l = levels[i];
     const std::size_t run = where.level[i];
-    rows.push_back({in_cm(l.cell_m), fixed(figure(results, run, "particles"), 0), fixed(figure(results, run, "steps"), 0),
-                    fixed(l.wall_s, 1), fixed(l.peak_g, 2), fixed(100 * relative_error(l.peak_g, refs.peak), 1),
-                    in_cm(l.depth_m), fixed(100 * relative_error(l.depth_m, refs.depth), 1), fixed(l.impulse_N_s, 2),
+    rows.push_back({in_cm(l.cell_m), fixed(figure(results, run, "particles"), 0),
+                    fixed(figure(results, run, "steps"), 0), fixed(l.wall_s, 1), fixed(l.peak_g, 2),
+                    fixed(100 * relative_error(l.peak_g, refs.peak), 1), in_cm(l.depth_m),
+                    fixed(100 * relative_error(l.depth_m, refs.depth), 1), fixed(l.impulse_N_s, 2),
                     fixed(100 * relative_error(l.impulse_N_s, refs.impulse), 1)});
   }
   md.table({"min cell [cm]", "particles", "steps", "wall time [s]", "2 ms peak [g]", "error [%]",
@@ -199,7 +200,8 @@ void write_pure_flip_table(Markdown& md, const StudyResults& results, const Conv
   std::vector<std::vector<std::string>> controls;
   for (std::size_t l = 0; l < kControlLevels; ++l) {
     const std::size_t flip = where.controls[l].pure_flip;
-    controls.push_back({in_cm(levels[l].cell_m), in_cm(levels[l].depth_m), in_cm(figure(results, flip, "final_penetration_m")),
+    controls.push_back({in_cm(levels[l].cell_m), in_cm(levels[l].depth_m),
+                        in_cm(figure(results, flip, "final_penetration_m")),
                         scientific(last(results.history(where.level[l]), "soil_kinetic_energy_J")),
                         scientific(last(results.history(flip), "soil_kinetic_energy_J"))});
   }

@@ -36,7 +36,8 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
   Study study;
   study.title = "Mesh convergence of the softening run (SSMC φ'_p = 60°)";
   for (double h : kSofteningCells_m) {
-    study.runs.push_back(scene_run(scenes_dir, "ffp_reference.json", "SSMC η = 8, " + cm_label(h), softening(h, kPaperEta)));
+    study.runs.push_back(
+        scene_run(scenes_dir, "ffp_reference.json", "SSMC η = 8, " + cm_label(h), softening(h, kPaperEta)));
     study.runs.back().expected_wall_s = 5.0 * std::pow(0.01 / h, 3);
   }
   // The same runs as the mesh-calibration study's: the cache shares them.
@@ -83,11 +84,12 @@ Study ffp_softening_convergence_study(const std::filesystem::path& scenes_dir) {
     std::vector<std::vector<std::string>> rows;
     for (std::size_t i = 0; i < levels; ++i) {
       const bool has_scaled = i < 3;
-      rows.push_back(
-          {cm_label(kSofteningCells_m[i]), fixed(figure(results, i, "particles"), 0), fixed(figure(results, i, "steps"), 0),
-           fixed(figure(results, i, "wall_time_s"), 1), fixed(peak[i], 2), fixed(100 * depth[i], 2),
-           has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–", has_scaled ? fixed(scaled_eta[i], 2) : "–",
-           has_scaled ? fixed(scaled_peak[i], 2) : "–", has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
+      rows.push_back({cm_label(kSofteningCells_m[i]), fixed(figure(results, i, "particles"), 0),
+                      fixed(figure(results, i, "steps"), 0), fixed(figure(results, i, "wall_time_s"), 1),
+                      fixed(peak[i], 2), fixed(100 * depth[i], 2),
+                      has_scaled ? fixed(figure(results, 4 + i, "eta"), 1) : "–",
+                      has_scaled ? fixed(scaled_eta[i], 2) : "–", has_scaled ? fixed(scaled_peak[i], 2) : "–",
+                      has_scaled ? fixed(100 * scaled_depth[i], 2) : "–"});
     }
     md.table({"min cell", "particles", "steps", "wall time [s]", "η = 8: 2 ms peak [g]", "final penetration [cm]",
               "η_cal(h)", "scaled η", "scaled: 2 ms peak [g]", "final penetration [cm]"},
