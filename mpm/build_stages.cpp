@@ -31,6 +31,7 @@ StageList build_stages(const Simulation& s) {
   if (smoothing == StrainSmoothing::full) list.append({"smooth_strain_increment", smooth_strain_increment});
   list.append({"update_stresses", update_stresses});
   list.append({s.settings.fixed_dt_s ? "check_time_step" : "update_time_step", update_time_step});
+  if (s.micropolar.active()) insert_micropolar_stages(list, s.settings.transfer);
   return list;
 }
 

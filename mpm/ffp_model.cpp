@@ -146,7 +146,7 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   m.bodies.push_back(BodyDescription{
       "soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0}, s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
       d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0}) : std::nullopt,
-      s.disconnected_density_ratio * s.density_kg_m3});
+      s.disconnected_density_ratio * s.density_kg_m3, s.micropolar});
   const double h = d.mesh.min_cell_m;
   assert(!s.near_spacing_m || (*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h));  // the reader's range
   const double spacing_r = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_r;

@@ -59,6 +59,9 @@ struct FfpSoil {
   /// 0.5 is far beyond any packing (loose sand at D_r = 0 is already at e_max), so
   /// only soil thrown up or torn apart is affected.
   double disconnected_density_ratio = 0.5;
+  /// A micropolar sand: the law unchanged, plus a micro-rotation and its linear elastic micro
+  /// terms (mpm/micropolar.hpp). None: the classical sand.
+  std::optional<MicropolarParameters> micropolar = std::nullopt;
 };
 
 struct FfpMesh {

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "models/micropolar.hpp"
 #include "mpm/boundary_conditions.hpp"
 #include "mpm/material_group.hpp"
 #include "mpm/shape_functions.hpp"
@@ -99,6 +100,9 @@ struct BodyDescription {
   /// Granular bodies: below this density (kg/m³) the grains have lost contact and
   /// the particle carries no stress (0: never). See MaterialGroup.
   double disconnected_below_kg_m3 = 0.0;
+  /// A micropolar (Cosserat) body: the law's return unchanged on the symmetric strain, plus
+  /// a micro-rotation and the linear elastic micro terms (mpm/micropolar.hpp). None: classical.
+  std::optional<MicropolarParameters> micropolar = std::nullopt;
 };
 
 enum class Side : std::uint8_t { inner, outer };

@@ -76,6 +76,7 @@ Simulation::Simulation(const ModelDescription& model)
   strain_increment.assign(particles.size(), Voigt::Zero());
   spin_dt.assign(particles.size(), 0.0);
   main_step_end = particles.size();
+  micropolar = make_micropolar_fields(model, *this);
   stages = build_stages(*this);
 
   dt_limit_s = cfl_time_step_limit(*this);
@@ -123,7 +124,8 @@ SignalMaxima group_signal_maxima(const Simulation& s, const MaterialGroup& g) {
 }
 
 /// `formed`: the maxima update_stresses formed (Simulation::stressed_signal), or null.
-SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g, const SignalMaxima* formed) {
+SignalSpeed signal_speed(const Simulation& s, std::size_t group, const SignalMaxima* formed) {
+  const MaterialGroup& g = s.groups[group];
   // c_p + |v| ≤ √((M + |σ|)/ρ_min) + |v|_max: the per-group extremes bound every
   // particle's sum and need no square root per particle. |σ| (a bound on the largest
   // principal stress) is the geometric stiffness of the current stress: it matters only
@@ -135,7 +137,11 @@ SignalSpeed signal_speed(const Simulation& s, const MaterialGroup& g, const Sign
   // A disconnected particle is stress-free; it reconnects at the disconnection density.
   if (g.disconnected_below_kg_m3 > 0.0) stiffest = std::min(stiffest, 1.0 / g.disconnected_below_kg_m3);
   const double speed = std::max(std::sqrt(m.speed2), s.rigid_speed_m_s);
-  return {std::sqrt((g.constrained_modulus() + m.stress) * stiffest) + speed, speed, m.bad};
+  // A micropolar group's rotation adds its own stiffnesses (docs/theory.md#micropolar-time-step);
+  // a classical group's sum is left exactly as it was.
+  const double modulus = g.constrained_modulus() + m.stress;
+  const double micropolar = micropolar_wave_modulus(s, group);
+  return {std::sqrt((micropolar > 0.0 ? modulus + micropolar : modulus) * stiffest) + speed, speed, m.bad};
 }
 
 [[noreturn]] void report_bad_particle(const Simulation& s) {
@@ -159,7 +165,7 @@ double cfl_time_step_limit(const Simulation& s, const std::vector<std::optional<
   double fastest = 0.0;
   for (std::size_t group = 0; group < s.groups.size(); ++group) {
     const bool known = group < formed.size() && formed[group];
-    const SignalSpeed signal = signal_speed(s, s.groups[group], known ? &*formed[group] : nullptr);
+    const SignalSpeed signal = signal_speed(s, group, known ? &*formed[group] : nullptr);
     if (signal.bad > 0) report_bad_particle(s);
     fastest = std::max(fastest, s.groups[group].begin < s.main_step_end ? signal.wave_and_speed : signal.speed);
   }
@@ -167,7 +173,7 @@ double cfl_time_step_limit(const Simulation& s, const std::vector<std::optional<
 }
 
 double group_time_step_limit(const Simulation& s, const MaterialGroup& g) {
-  const SignalSpeed signal = signal_speed(s, g, nullptr);
+  const SignalSpeed signal = signal_speed(s, static_cast<std::size_t>(&g - s.groups.data()), nullptr);
   if (signal.bad > 0) report_bad_particle(s);
   return s.grid.min_spacing() / signal.wave_and_speed;
 }

@@ -12,6 +12,7 @@
 #include "models/voigt.hpp"
 #include "mpm/grid.hpp"
 #include "mpm/material_group.hpp"
+#include "mpm/micropolar.hpp"
 #include "mpm/model.hpp"
 #include "mpm/particle_bins.hpp"
 #include "mpm/particles.hpp"
@@ -81,7 +82,8 @@ class Simulation {
   std::vector<double> absorbing_reaction_r, absorbing_reaction_z;
   /// Each absorbing node's displacement since the start, per field (the springs' extension).
   std::vector<double> absorbing_displacement_r, absorbing_displacement_z;
-  long wall_clamps = 0;  ///< particle moves stopped at a wall or the axis (should stay 0)
+  MicropolarFields micropolar;  ///< the micropolar bodies' fields (inactive when there are none)
+  long wall_clamps = 0;         ///< particle moves stopped at a wall or the axis (should stay 0)
   /// Particles [0, main_step_end) are moved, strained and stressed by the step's stages;
   /// those after it belong to a body that takes its own substeps inside the step
   /// (mpm/body_subcycle.hpp) and only lend their mass and momentum to the grid.
@@ -113,6 +115,7 @@ class Simulation {
 
 /// The CFL limit Δt_crit = h_min / (c_p + |v|_max): c_p = √(M/ρ) of each group at
 /// its lowest current density, |v|_max of its particles (throws StepFailure on NaN).
+/// A micropolar group's c² adds its micro terms' stiffness (MicropolarGroup::wave_modulus).
 /// A subcycled group (past main_step_end) counts with its speed only: its own
 /// substeps keep its p-wave stable.
 double cfl_time_step_limit(const Simulation& simulation);
@@ -120,7 +123,8 @@ double cfl_time_step_limit(const Simulation& simulation);
 /// Simulation::stressed_signal, this step's) instead of a pass of their own: the same bits.
 double cfl_time_step_limit(const Simulation& simulation, const std::vector<std::optional<SignalMaxima>>& formed);
 
-/// The same limit for one group alone, its p-wave included (a subcycled body's substep).
+/// The same limit for one group alone (one of simulation.groups), its p-wave included (a
+/// subcycled body's substep).
 double group_time_step_limit(const Simulation& simulation, const MaterialGroup& group);
 
 }  // namespace ffp::mpm

@@ -53,4 +53,11 @@ void smooth_strain_increment(Simulation& s);  ///< cell-averaged whole Δε (str
 void update_stresses(Simulation& s);          ///< Jaumann rotation, then the law
 void update_time_step(Simulation& s);         ///< CFL Δt for the next step (or check a fixed Δt)
 
+// The micropolar option's stages (mpm/stage_micropolar.cpp; inserted by insert_micropolar_stages).
+void map_micropolar_to_grid(Simulation& s);          ///< Θ_i, angular momentum, couple force; skew stress into f_i^int
+void integrate_micro_rotation(Simulation& s);        ///< ω̇_i^n, ω̇_i^{n+1}; fixities of ω
+void update_particle_micro_rotation(Simulation& s);  ///< FLIP/PIC ω̇_p
+void map_micro_spin_to_grid(Simulation& s);          ///< MUSL: ω̇_i = Σ S m j ω̇_p / Θ_i
+void update_micropolar_stresses(Simulation& s);      ///< ω_p, skew and couple stresses
+
 }  // namespace ffp::mpm
