@@ -56,6 +56,7 @@ mkdir -p "$out"
 # Shortened windows for the scenes that take minutes (the same for every build compared).
 declare -A quick=(
   [ffp_steel]="--set end_time_s=0.004"
+  [ffp_micropolar]="--set end_time_s=0.01"
   [calibration_dr15_mpm_05cm]="--set max_iterations=1"
   [calibration_dr15_mpm_1cm]="--set max_iterations=1"
   [inverse_reference]="--set max_iterations=1"

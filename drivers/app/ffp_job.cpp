@@ -223,6 +223,7 @@ void PenetrometerJob::run(RunContext& context) {
       columns.extra.emplace_back("localised", std::move(map.localised));
       columns.extra.emplace_back("band_angle_deg", std::move(map.band_angle_deg));
     }
+    for (auto& column : micropolar_columns(s.micropolar)) columns.extra.push_back(std::move(column));
     fields.write(s.particles, s.time_s, columns);
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
     write_pressure_map(*run_, name_, plots);

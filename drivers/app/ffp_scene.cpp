@@ -29,9 +29,10 @@ std::pair<int, int> particles_per_cell(SceneReader& r, const std::string& key, i
 /// Returns the material's cohesion c' (Pa; 0 for a sand or an elastic soil).
 double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
   SceneReader material = scene.required_object("material", Doc("the sand: its law and density"));
-  const MaterialSpec spec = read_material(material, DensityRule::required);
+  const MaterialSpec spec = read_material(material, DensityRule::required, MicropolarRule::allowed);
   const double cohesion_Pa = spec.peak_cohesion_Pa();
   d.soil.law = spec.law();
+  d.soil.micropolar = spec.micropolar;
   d.soil.density_kg_m3 = *spec.density_kg_m3;
   SceneReader soil = scene.object("soil", Doc("the sand chamber and its particles"));
   d.soil.depth_m = soil.number("depth_m", Range::positive(kMaxLength_m, "m"), 0.4, Doc("depth of the sand"));

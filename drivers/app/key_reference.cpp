@@ -16,6 +16,8 @@ namespace {
 // Material variants for kinds whose shipped scenes hold no such material: an ssmc law's
 // rate dependence, and its Bolton dilatancy in place of a constant ψ_p.
 const std::string kRateDependence = R"(rate_dependence={"alpha_phi": 0.1, "reference_strain_rate_per_s": 0.01})";
+// A micropolar material, for the MPM kinds whose shipped scenes hold none.
+const std::string kMicropolar = R"(micropolar={"length_m": 0.0003})";
 
 std::vector<std::string> under(const std::string& prefix, const std::vector<std::string>& overrides) {
   std::vector<std::string> out;
@@ -164,6 +166,7 @@ std::vector<Probe> branch_probes(std::string_view kind) {
       p.overrides.insert(p.overrides.begin(), ssmc.begin(), ssmc.end());
       probes.push_back(p);
     }
+    probes.push_back({"mpm_geostatic_column", {"bodies.0.material." + kMicropolar}});
     return probes;
   }
   if (kind == "ffp")
@@ -172,10 +175,11 @@ std::vector<Probe> branch_probes(std::string_view kind) {
                      "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005", "output.localisation=true"}}},
                   material_probes("ffp_calibrated", "material."));
   if (kind == "cpt")
-    return joined({{"cpt_reference",
-                    {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null",
-                     "soil.near_spacing_m=0.005", "output.localisation=true"}}},
-                  material_probes("cpt_reference", "material."));
+    return joined(
+        {{"cpt_reference",
+          {"end_depth_m=null", "end_time_s=1", "soil.particles_per_cell_near=null", "soil.near_spacing_m=0.005",
+           "output.localisation=true"}}},
+        joined(material_probes("cpt_reference", "material."), {{"cpt_reference", {"material." + kMicropolar}}}));
   if (kind == "record")
     return {{"record_reference",
              {"medium=water", "ffp.volume_m3=0.003", "impact_time_s=null", "sensor_range_g=100", "rate_laws=null"}},

@@ -179,7 +179,9 @@ void MpmJob::run(RunContext& context) {
     gravity.push_back(d.gravity_energy_J);
     total.push_back(d.total_energy_J());
   };
-  callbacks.write_fields = [&] { fields.write(s.particles, s.time_s, {.stress_components = true, .extra = {}}); };
+  callbacks.write_fields = [&] {
+    fields.write(s.particles, s.time_s, {.stress_components = true, .extra = micropolar_columns(s.micropolar)});
+  };
   const mpm::Diagnostics initial = mpm::measure(s);
   const MpmOutputTimes times{scene_.end_time_s, scene_.output.history_interval_s, scene_.output.field_times_s};
   context.steps = run_mpm(s, times, callbacks, "mpm", name_, context.show_progress).steps;

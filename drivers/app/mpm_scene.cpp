@@ -205,8 +205,9 @@ MpmScene read_mpm_scene(SceneReader& scene) {
     for (const std::string& existing : out.body_names)
       if (existing == body.name) b.fail("name", "'" + body.name + "' is used by another body");
     SceneReader material = b.required_object("material", Doc("the body's material"));
-    const MaterialSpec spec = read_material(material, DensityRule::required);
+    const MaterialSpec spec = read_material(material, DensityRule::required, MicropolarRule::allowed);
     body.law = spec.law();
+    body.micropolar = spec.micropolar;
     body.density_kg_m3 = *spec.density_kg_m3;
     SceneReader region = b.required_object("region", Doc("where its particles start: a box, or a sphere on the axis"));
     body.region = read_region(region, model.r_nodes_m, model.z_nodes_m);

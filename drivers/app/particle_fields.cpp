@@ -1,5 +1,6 @@
 #include "drivers/app/particle_fields.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "models/voigt.hpp"
@@ -47,6 +48,22 @@ void ParticleFieldSeries::write(const mpm::Particles& P, double time_s, const Pa
   std::snprintf(file, sizeof file, "particles_%04d.vtu", static_cast<int>(pvd_.size()));
   write_vtu(dir_ / file, cloud);
   pvd_.add(time_s, file);
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> micropolar_columns(const mpm::MicropolarFields& f) {
+  if (!f.active()) return {};
+  const std::size_t n = f.rotation.size();
+  std::vector<double> relative(n), skew(n), couple(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    relative[i] = f.macro_rotation[i] - f.rotation[i];
+    skew[i] = 1e-3 * f.skew_stress[i];
+    couple[i] =
+        std::sqrt(f.couple_r[i] * f.couple_r[i] + f.couple_z[i] * f.couple_z[i] + f.couple_hoop[i] * f.couple_hoop[i]);
+  }
+  return {{"micro_rotation_rad", f.rotation},
+          {"relative_rotation_rad", relative},
+          {"skew_stress_kPa", skew},
+          {"couple_stress_N_m", couple}};
 }
 
 void ParticleFieldSeries::finish() const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "drivers/output/vtu_writer.hpp"
+#include "mpm/micropolar.hpp"
 #include "mpm/particles.hpp"
 
 namespace ffp {
@@ -21,6 +22,11 @@ struct ParticleFieldColumns {
   /// One value per particle each, after `deviatoric_strain` (e.g. the plastic deviatoric strain).
   std::vector<std::pair<std::string, std::vector<double>>> extra;
 };
+
+/// A micropolar run's extra columns (none for a classical one): the micro-rotation ω and the
+/// relative rotation ω_M − ω (rad), the skew stress s (kPa) and the couple stresses' magnitude
+/// |m| (N/m) (docs/theory.md#micropolar).
+std::vector<std::pair<std::string, std::vector<double>>> micropolar_columns(const mpm::MicropolarFields& fields);
 
 /// The numbered field files of one run and their .pvd index.
 class ParticleFieldSeries {

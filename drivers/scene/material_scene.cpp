@@ -27,9 +27,40 @@ double read_peak_dilatancy_deg(SceneReader& m, double phi_deg) {
                       .only_with("model = mohr_coulomb, or ssmc without relative_density"));
 }
 
+/// The `micropolar` object (docs/theory.md#micropolar): absent, the classical continuum.
+std::optional<MicropolarParameters> read_micropolar(SceneReader& m, MicropolarRule rule) {
+  if (rule == MicropolarRule::refused) {
+    m.refuse("micropolar", "a micropolar material is an option of the MPM kinds (mpm, ffp, cpt)");
+    return std::nullopt;
+  }
+  const Doc doc = Doc("a micropolar (Cosserat) material: the law unchanged on the symmetric strain, plus a "
+                      "micro-rotation with linear elastic skew and couple stresses "
+                      "([theory](../theory.md#micropolar))")
+                      .by_default("none: the classical continuum")
+                      .within("object");
+  if (!m.has("micropolar")) {
+    m.allow("micropolar", doc);
+    return std::nullopt;
+  }
+  SceneReader r = m.object("micropolar", doc);
+  MicropolarParameters p;
+  p.length_m = r.number("length_m", Range::positive(0.1, "m"),
+                        Doc("the internal length ℓ of the couple stresses m = 2 G ℓ² κ (about d50: Mühlhaus & "
+                            "Vardoulakis 1987)"));
+  p.cosserat_shear_ratio =
+      r.number("cosserat_shear_ratio", Range::positive(10.0), 0.5,
+               Doc("G_c/G: the Cosserat shear modulus of the skew stress s = 2 G_c (ω_M − ω), over the law's G"));
+  p.micro_inertia_m2 = r.number("micro_inertia_m2", Range::positive(1.0, "m²"), p.length_m * p.length_m / 10.0,
+                                Doc("j: the micro-rotation's inertia per unit mass (ρ j per unit volume); a sphere of "
+                                    "diameter d has d²/10")
+                                    .by_default("length_m²/10"));
+  r.finish("micropolar (length_m, cosserat_shear_ratio, micro_inertia_m2)");
+  return p;
+}
+
 }  // namespace
 
-MaterialSpec read_material(SceneReader& m, DensityRule density) {
+MaterialSpec read_material(SceneReader& m, DensityRule density, MicropolarRule micropolar) {
   MaterialSpec spec;
   spec.model = m.choice("model", {"linear_elastic", "mohr_coulomb", "ssmc"},
                         Doc("the constitutive law: each accepts only its own keys"));
@@ -37,6 +68,7 @@ MaterialSpec read_material(SceneReader& m, DensityRule density) {
   if (density == DensityRule::required)
     spec.density_kg_m3 =
         m.number("density_kg_m3", Range::positive(kMaxDensity, "kg/m³"), Doc("density ρ (unit weight γ = ρ g)"));
+  spec.micropolar = read_micropolar(m, micropolar);
 
   if (spec.model == "linear_elastic") {
     spec.parameters = elastic;
@@ -135,6 +167,10 @@ json material_json(const MaterialSpec& spec) {
   const ElasticConstants& e = spec.elastic();
   m["E_kPa"] = 1e-3 * e.youngs_modulus_Pa;
   m["nu"] = e.poisson_ratio;
+  if (spec.micropolar)
+    m["micropolar"] = {{"length_m", spec.micropolar->length_m},
+                       {"cosserat_shear_ratio", spec.micropolar->cosserat_shear_ratio},
+                       {"micro_inertia_m2", spec.micropolar->micro_inertia_m2}};
   if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) {
     m["phi_peak_deg"] = mc->friction_angle_rad / kDegree;
     m["psi_peak_deg"] = mc->dilatancy_angle_rad / kDegree;

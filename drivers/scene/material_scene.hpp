@@ -15,7 +15,8 @@
 #include "drivers/scene/scene_reader.hpp"
 #include "models/elastic.hpp"
 #include "models/material_law.hpp"
-#include "models/math_constants.hpp"  // kDegree: scenes give angles in degrees
+#include "models/math_constants.hpp"
+#include "models/micropolar.hpp"  // kDegree: scenes give angles in degrees
 #include "models/state_output.hpp"
 
 namespace ffp {
@@ -23,7 +24,8 @@ namespace ffp {
 struct MaterialSpec {
   std::string model;  ///< linear_elastic | mohr_coulomb | ssmc
   MaterialParameters parameters;
-  std::optional<double> density_kg_m3;  ///< present only when the kind asked for it
+  std::optional<double> density_kg_m3;             ///< present only when the kind asked for it
+  std::optional<MicropolarParameters> micropolar;  ///< the micropolar option (MPM kinds only)
 
   const ElasticConstants& elastic() const { return elastic_constants(parameters); }
   MaterialLaw law() const { return make_law(parameters); }
@@ -35,9 +37,13 @@ struct MaterialSpec {
 inline constexpr std::string_view kAtRestK0Words = "Jaky's 1 − sin φ'_p (linear_elastic: ν/(1 − ν))";
 
 enum class DensityRule { not_used, required };
+/// The micropolar option needs a continuum with gradients: the MPM kinds take it, the
+/// material-point kinds refuse it.
+enum class MicropolarRule { refused, allowed };
 
 /// Reads and validates a material object (reader positioned on it); finish()es it.
-MaterialSpec read_material(SceneReader& material, DensityRule density);
+MaterialSpec read_material(SceneReader& material, DensityRule density,
+                           MicropolarRule micropolar = MicropolarRule::refused);
 
 /// The material as scene keys again (for the reproducer of a failed step).
 json material_json(const MaterialSpec& spec);

@@ -201,3 +201,41 @@ TEST_CASE("an override to null removes the key so that its default applies", "[f
   CHECK(r.exit_code == 0);
   CHECK(r.out.find("\"near_spacing_m\": 0.0022") != std::string::npos);
 }
+
+TEST_CASE("the micropolar block: each key within its range, only its own keys, only in MPM kinds", "[ffp][scene]") {
+  json micropolar = reference();
+  micropolar["material"]["micropolar"] = {{"length_m", 0.0003}};
+  {
+    const ProgramResult r = check(micropolar);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    // The defaults filled in: G_c/G = 0.5, j = ℓ²/10.
+    const std::string resolved = "resolved scene (defaults filled in):";
+    REQUIRE(r.out.find(resolved) != std::string::npos);
+    const json echo = json::parse(r.out.substr(r.out.find(resolved) + resolved.size()));
+    CHECK(echo["material"]["micropolar"]["cosserat_shear_ratio"] == 0.5);
+    CHECK(echo["material"]["micropolar"]["micro_inertia_m2"].get<double>() == Approx(9e-9).epsilon(1e-12));
+    CHECK(r.out.find("map_micropolar_to_grid") != std::string::npos);
+  }
+  auto with = [&](const char* key, json value) {
+    json s = micropolar;
+    s["material"]["micropolar"][key] = value;
+    return s;
+  };
+  refused(with("length_m", -0.001), "material.micropolar.length_m", "> 0 and ≤ 0.1 m");
+  refused(with("length_m", 1.0), "material.micropolar.length_m", "> 0 and ≤ 0.1 m");
+  refused(with("cosserat_shear_ratio", 0.0), "material.micropolar.cosserat_shear_ratio", "> 0 and ≤ 10");
+  refused(with("micro_inertia_m2", -1.0), "material.micropolar.micro_inertia_m2", "> 0 and ≤ 1 m²");
+  refused(with("d50_m", 0.0003), "material.micropolar.d50_m", "unknown key");
+  json no_length = reference();
+  no_length["material"]["micropolar"] = json::object();
+  refused(no_length, "material.micropolar.length_m", "required");
+  // A classical scene carries none of the option's keys, and builds no micropolar stage.
+  const ProgramResult classical = check(reference());
+  CHECK(classical.exit_code == 0);
+  CHECK(classical.out.find("micropolar") == std::string::npos);
+  // A material point has no gradients: the point and triaxial kinds refuse the option.
+  json point = read_json(scene_path("point_triaxial_mc.json"));
+  point["material"]["micropolar"] = {{"length_m", 0.0003}};
+  refused(point, "material.micropolar", "option of the MPM kinds");
+}
