@@ -288,7 +288,7 @@ TEST_CASE("micropolar time step: the CFL limit holds the rotation's stiffness, s
   CHECK((thrown || largest_rotation_rate(s) > 1e3 * start));
 }
 
-TEST_CASE("stage list: a classical model builds today's stages; a micropolar one inserts its five",
+TEST_CASE("stage list: a classical model builds today's stages, a micropolar one inserts its five",
           "[mpm][micropolar]") {
   const std::vector<std::string> classical = {"reset_grid",
                                               "compute_shape_functions",
