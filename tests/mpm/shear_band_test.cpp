@@ -158,7 +158,7 @@ void check_measure(const std::vector<Level>& levels) {
 TEST_CASE(
     "shear band in a sheared hollow cylinder: one cell wide at every h when classical, "
     "of a width set by l with a converging post-peak force when micropolar",
-    "[mpm][verification][micropolar][localisation]") {
+    "[mpm][verification][micropolar][shear-band]") {
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength};
   const std::vector<Level> classical = run_levels(cylinder_case(softening_sand(), std::nullopt), cells);
   check_classical(classical);
@@ -199,7 +199,7 @@ MohrCoulomb plastic_sand() { return MohrCoulomb({{2.5e6, 0.33}, 39.0 * kDegree, 
 }  // namespace
 
 TEST_CASE("shear band study: five cell sizes, the softening and the perfectly plastic sand, and l (hidden: ~5 min)",
-          "[.][mpm][micropolar][localisation-study]") {
+          "[.][mpm][micropolar][shear-band-study]") {
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength, 0.25 * kLength, 0.125 * kLength};
   const std::vector<Level> classical = run_levels(cylinder_case(softening_sand(), std::nullopt), cells);
   print_table("SSMC, classical", classical);
