@@ -199,7 +199,7 @@ MohrCoulomb plastic_sand() { return MohrCoulomb({{2.5e6, 0.33}, 39.0 * kDegree, 
 }  // namespace
 
 TEST_CASE("shear band study: five cell sizes, the softening and the perfectly plastic sand, and l (hidden: ~5 min)",
-          "[.][mpm][micropolar][shear-band-study]") {
+          "[.][shear-band-study]") {
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength, 0.25 * kLength, 0.125 * kLength};
   const std::vector<Level> classical = run_levels(cylinder_case(softening_sand(), std::nullopt), cells);
   print_table("SSMC, classical", classical);
