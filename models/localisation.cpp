@@ -21,7 +21,7 @@ Eigen::Matrix3d to_matrix(const Voigt& t) {
   return m;
 }
 
-constexpr int kSamples = 180;  // every 1°: the header says why this finds the global maximum of t
+constexpr int kSamples = 180;  // every 1°: the header says why this finds the global maximum
 
 Eigen::Vector3d in_plane_normal(double theta_rad) { return {std::cos(theta_rad), std::sin(theta_rad), 0.0}; }
 
@@ -47,6 +47,45 @@ struct Harmonics {
   double slope(double theta) const { return slope(Angles(theta)); }
 };
 
+/// t(n) = G (b·n)·(A^e)⁻¹(a·n) = (b·n)·(a·n) − κ (n·b·n)(n·a·n), (A^e)⁻¹ = (I − κ n⊗n)/G,
+/// κ = (λ + G)/(λ + 2G): the H-free part of a mechanism pair's term in det A / det A^e.
+double coupling_term(const Eigen::Matrix3d& b, const Eigen::Matrix3d& a, double coupling, const Eigen::Vector3d& n) {
+  const Eigen::Vector3d an = a * n, bn = b * n;
+  return bn.dot(an) - coupling * n.dot(bn) * n.dot(an);
+}
+
+/// t(θ) for n = (cos θ, sin θ, 0) as its harmonics: with c = cos θ, s = sin θ, b_i the i-th
+/// column of b and B_ij = b_i·a_j, (b·n)·(a·n) = c² B00 + cs (B01 + B10) + s² B11 and
+/// n·b·n = c² b00 + 2cs b01 + s² b11 (the same for a); c² = (1 + cos 2θ)/2, s² = (1 − cos 2θ)/2
+/// and cs = sin 2θ/2 turn t = (b·n)·(a·n) − κ (n·b·n)(n·a·n) into five numbers: the search
+/// then costs a few multiplications per direction.
+Harmonics coupling_harmonics(const Eigen::Matrix3d& b, const Eigen::Matrix3d& a, double coupling) {
+  struct Pair {  // x0 + x2c cos 2θ + x2s sin 2θ
+    double x0, x2c, x2s;
+  };
+  auto of_normal = [](const Eigen::Matrix3d& m) {
+    return Pair{0.5 * (m(0, 0) + m(1, 1)), 0.5 * (m(0, 0) - m(1, 1)), m(0, 1)};
+  };
+  const double b00 = b.col(0).dot(a.col(0)), b01 = b.col(0).dot(a.col(1)), b10 = b.col(1).dot(a.col(0)),
+               b11 = b.col(1).dot(a.col(1));
+  const Pair product{0.5 * (b00 + b11), 0.5 * (b00 - b11), 0.5 * (b01 + b10)};  // (b·n)·(a·n)
+  const Pair nb = of_normal(b), na = of_normal(a);
+  // (n·b·n)(n·a·n), with cos² 2θ = (1 + cos 4θ)/2, sin² 2θ = (1 − cos 4θ)/2, cos 2θ sin 2θ = sin 4θ/2.
+  const double k = coupling;
+  Harmonics h;
+  h.t0 = product.x0 - k * (nb.x0 * na.x0 + 0.5 * (nb.x2c * na.x2c + nb.x2s * na.x2s));
+  h.c2 = product.x2c - k * (nb.x0 * na.x2c + na.x0 * nb.x2c);
+  h.s2 = product.x2s - k * (nb.x0 * na.x2s + na.x0 * nb.x2s);
+  h.c4 = -k * 0.5 * (nb.x2c * na.x2c - nb.x2s * na.x2s);
+  h.s4 = -k * 0.5 * (nb.x2c * na.x2s + nb.x2s * na.x2c);
+  return h;
+}
+
+/// A^e_jk = (λ + G) n_j n_k + G δ_jk
+Eigen::Matrix3d elastic_acoustic_tensor(double lambda, double shear, const Eigen::Vector3d& n) {
+  return (lambda + shear) * (n * n.transpose()) + shear * Eigen::Matrix3d::Identity();
+}
+
 /// What A(n) needs of the law, formed once per point: λ, G, a = D:m, b = D:n_f (D has
 /// major symmetry, so n_f:D = D:n_f), n_f:D:m and χ = n_f:D:m + H.
 struct AcousticTerms {
@@ -69,51 +108,114 @@ struct AcousticTerms {
   }
 
   Eigen::Matrix3d tensor(const Eigen::Vector3d& n) const {
-    // A^e_jk = (λ + G) n_j n_k + G δ_jk
-    const Eigen::Matrix3d elastic = (lambda + shear) * (n * n.transpose()) + shear * Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d elastic = elastic_acoustic_tensor(lambda, shear, n);
     if (!plastic) return elastic;
     assert(chi != 0.0 && "A(n) needs χ = n_f:D:m + H ≠ 0");
     // A_jk = A^e_jk − (a·n)_j (b·n)_k / χ (Rudnicki & Rice 1975)
     return elastic - ((a * n) * (b * n).transpose()) / chi;
   }
 
-  /// t(n) = G (b·n)·(A^e)⁻¹(a·n), (A^e)⁻¹ = (I − (λ + G)/(λ + 2G) n⊗n)/G: the H-free part of
   /// det A(n) / det A^e = 1 − t/(Gχ) (the matrix determinant lemma: A is A^e less a rank-one term).
-  double coupling_term(const Eigen::Vector3d& n) const {
-    const Eigen::Vector3d an = a * n, bn = b * n;
-    return bn.dot(an) - coupling * n.dot(bn) * n.dot(an);
-  }
   double ratio(double theta_rad) const {
     if (!plastic) return 1.0;
     assert(chi != 0.0 && "r(θ) needs χ = n_f:D:m + H ≠ 0");
-    return 1.0 - coupling_term(in_plane_normal(theta_rad)) * inverse_shear_chi;
+    return 1.0 - coupling_term(b, a, coupling, in_plane_normal(theta_rad)) * inverse_shear_chi;
+  }
+  Harmonics harmonics() const { return coupling_harmonics(b, a, coupling); }
+};
+
+/// F(θ) = −det(G − T(θ)) of a corner, T_ab = t_ab/G from the harmonics of each pair (b_a, a_b):
+/// the search maximises it (r = −F/det G), with its slope and curvature from the product rule.
+struct CornerDeterminant {
+  std::array<Harmonics, 4> t;  ///< T_11, T_12, T_21, T_22
+  Eigen::Matrix2d g;
+
+  /// M = G − T and its first two derivatives (M' = −T', M'' = −T'') at one angle, row-major.
+  struct Entries {
+    std::array<double, 4> m, dm, ddm;
+  };
+  Entries entries(const Harmonics::Angles& x) const {
+    Entries e;
+    const std::array<double, 4> gg = {g(0, 0), g(0, 1), g(1, 0), g(1, 1)};
+    for (int k = 0; k < 4; ++k) {
+      e.m[k] = gg[k] - t[k].value(x);
+      e.dm[k] = -t[k].slope(x);
+      e.ddm[k] = -t[k].curvature(x);
+    }
+    return e;
+  }
+  double value(const Harmonics::Angles& x) const {
+    std::array<double, 4> m;
+    const std::array<double, 4> gg = {g(0, 0), g(0, 1), g(1, 0), g(1, 1)};
+    for (int k = 0; k < 4; ++k) m[k] = gg[k] - t[k].value(x);
+    return -(m[0] * m[3] - m[1] * m[2]);
+  }
+  double slope(const Harmonics::Angles& x) const {
+    const Entries e = entries(x);
+    return -(e.dm[0] * e.m[3] + e.m[0] * e.dm[3] - e.dm[1] * e.m[2] - e.m[1] * e.dm[2]);
+  }
+  double curvature(const Harmonics::Angles& x) const {
+    const Entries e = entries(x);
+    return -(e.ddm[0] * e.m[3] + 2.0 * e.dm[0] * e.dm[3] + e.m[0] * e.ddm[3] -
+             (e.ddm[1] * e.m[2] + 2.0 * e.dm[1] * e.dm[2] + e.m[1] * e.ddm[2]));
+  }
+  double value(double theta) const { return value(Harmonics::Angles(theta)); }
+  double slope(double theta) const { return slope(Harmonics::Angles(theta)); }
+};
+
+/// What a corner's A(n) needs, formed once per point: a_a = D:m_a, b_a = D:n_a and G.
+struct CornerTerms {
+  double lambda = 0.0, shear = 0.0, coupling = 0.0;
+  std::array<Eigen::Matrix3d, 2> a, b;
+  Eigen::Matrix2d g;
+
+  CornerTerms(const ElasticConstants& elastic, const PlasticCorner& corner)
+      : lambda(elastic.lame_lambda()), shear(elastic.shear_modulus()) {
+    coupling = (lambda + shear) / (lambda + 2.0 * shear);
+    const ElasticStiffness d = ElasticStiffness::of(elastic);
+    std::array<Voigt, 2> dm;
+    for (int k = 0; k < 2; ++k) {
+      dm[k] = d.stress_increment(corner.flow_directions[k]);
+      a[k] = to_matrix(dm[k]);
+      b[k] = to_matrix(d.stress_increment(corner.yield_normals[k]));
+    }
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) g(i, j) = contract(corner.yield_normals[i], dm[j]) + corner.hardening_Pa(i, j);
   }
 
-  /// t(θ) for n = (cos θ, sin θ, 0) as its harmonics: with c = cos θ, s = sin θ, b_i the i-th
-  /// column of b and B_ij = b_i·a_j, (b·n)·(a·n) = c² B00 + cs (B01 + B10) + s² B11 and
-  /// n·b·n = c² b00 + 2cs b01 + s² b11 (the same for a); c² = (1 + cos 2θ)/2, s² = (1 − cos 2θ)/2
-  /// and cs = sin 2θ/2 turn t = (b·n)·(a·n) − κ (n·b·n)(n·a·n), κ = (λ + G)/(λ + 2G), into five
-  /// numbers: the search then costs a few multiplications per direction.
-  Harmonics harmonics() const {
-    struct Pair {  // x0 + x2c cos 2θ + x2s sin 2θ
-      double x0, x2c, x2s;
-    };
-    auto of_normal = [](const Eigen::Matrix3d& m) {
-      return Pair{0.5 * (m(0, 0) + m(1, 1)), 0.5 * (m(0, 0) - m(1, 1)), m(0, 1)};
-    };
-    const double b00 = b.col(0).dot(a.col(0)), b01 = b.col(0).dot(a.col(1)), b10 = b.col(1).dot(a.col(0)),
-                 b11 = b.col(1).dot(a.col(1));
-    const Pair product{0.5 * (b00 + b11), 0.5 * (b00 - b11), 0.5 * (b01 + b10)};  // (b·n)·(a·n)
-    const Pair nb = of_normal(b), na = of_normal(a);
-    // (n·b·n)(n·a·n), with cos² 2θ = (1 + cos 4θ)/2, sin² 2θ = (1 − cos 4θ)/2, cos 2θ sin 2θ = sin 4θ/2.
-    const double k = coupling;
-    Harmonics h;
-    h.t0 = product.x0 - k * (nb.x0 * na.x0 + 0.5 * (nb.x2c * na.x2c + nb.x2s * na.x2s));
-    h.c2 = product.x2c - k * (nb.x0 * na.x2c + na.x0 * nb.x2c);
-    h.s2 = product.x2s - k * (nb.x0 * na.x2s + na.x0 * nb.x2s);
-    h.c4 = -k * 0.5 * (nb.x2c * na.x2c - nb.x2s * na.x2s);
-    h.s4 = -k * 0.5 * (nb.x2c * na.x2s + nb.x2s * na.x2c);
-    return h;
+  /// G a P-matrix: one solution of the multipliers for every rate (models/localisation.hpp).
+  bool loading_branch() const { return g(0, 0) > 0.0 && g(1, 1) > 0.0 && g.determinant() > 0.0; }
+
+  Eigen::Matrix3d tensor(const Eigen::Vector3d& n) const {
+    assert(g.determinant() != 0.0 && "A(n) needs det G ≠ 0");
+    // A = A^e − Σ_ab (a_a·n) (G⁻¹)_ab (b_b·n) (Koiter's tangent contracted with n on both sides)
+    const Eigen::Matrix2d inverse = g.inverse();
+    Eigen::Matrix3d out = elastic_acoustic_tensor(lambda, shear, n);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) out -= inverse(i, j) * ((a[i] * n) * (b[j] * n).transpose());
+    return out;
+  }
+
+  /// det A / det A^e = det(G − T(n)) / det G, T_ab = t(b_a, a_b)/G (the matrix determinant lemma).
+  double ratio(double theta_rad) const {
+    assert(g.determinant() != 0.0 && "r(θ) needs det G ≠ 0");
+    const Eigen::Vector3d n = in_plane_normal(theta_rad);
+    Eigen::Matrix2d t;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) t(i, j) = coupling_term(b[i], a[j], coupling, n) / shear;
+    return (g - t).determinant() / g.determinant();
+  }
+
+  CornerDeterminant determinant() const {
+    CornerDeterminant f;
+    f.g = g;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        Harmonics h = coupling_harmonics(b[i], a[j], coupling);
+        for (double* x : {&h.t0, &h.c2, &h.s2, &h.c4, &h.s4}) *x /= shear;
+        f.t[2 * i + j] = h;
+      }
+    return f;
   }
 };
 
@@ -121,71 +223,128 @@ struct Maximum {
   double theta_rad, value;
 };
 
-/// Golden section for the largest t on [lo, hi], stopping at 1e-10 rad (about 40 steps from
-/// 2°): near √ε, where t stops changing in double precision at a quadratic maximum.
-Maximum golden_section(const Harmonics& t, double lo, double hi) {
+/// Golden section for the largest f on [lo, hi], stopping at 1e-10 rad (about 40 steps from
+/// 2°): near √ε, where f stops changing in double precision at a quadratic maximum.
+template <class Function>
+Maximum golden_section(const Function& f, double lo, double hi) {
   constexpr double kInverseGolden = 0.6180339887498949;  // (√5 − 1)/2
   double x1 = hi - kInverseGolden * (hi - lo), x2 = lo + kInverseGolden * (hi - lo);
-  double t1 = t.value(x1), t2 = t.value(x2);
+  double f1 = f.value(x1), f2 = f.value(x2);
   while (hi - lo > 1e-10) {
-    if (t1 >= t2) {
-      hi = x2, x2 = x1, t2 = t1;
-      x1 = hi - kInverseGolden * (hi - lo), t1 = t.value(x1);
+    if (f1 >= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - kInverseGolden * (hi - lo), f1 = f.value(x1);
     } else {
-      lo = x1, x1 = x2, t1 = t2;
-      x2 = lo + kInverseGolden * (hi - lo), t2 = t.value(x2);
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + kInverseGolden * (hi - lo), f2 = f.value(x2);
     }
   }
-  return t1 >= t2 ? Maximum{x1, t1} : Maximum{x2, t2};
+  return f1 >= f2 ? Maximum{x1, f1} : Maximum{x2, f2};
 }
 
-/// t' = 0 between lo (t' > 0) and hi (t' < 0): Newton's steps, a bisection wherever a step
-/// would leave the bracket or t'' ≥ 0, until Newton's step is below 1e-13 rad (a few steps
+/// f' = 0 between lo (f' > 0) and hi (f' < 0): Newton's steps, a bisection wherever a step
+/// would leave the bracket or f'' ≥ 0, until Newton's step is below 1e-13 rad (a few steps
 /// from 1°; near the rounding of θ).
-Maximum newton(const Harmonics& t, double lo, double hi, double start) {
+template <class Function>
+Maximum newton(const Function& f, double lo, double hi, double start) {
   double x = start;
   for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
     const Harmonics::Angles at(x);
-    const double slope = t.slope(at), curvature = t.curvature(at);
+    const double slope = f.slope(at), curvature = f.curvature(at);
     if (curvature < 0.0 && std::abs(slope) <= 1e-13 * -curvature) break;
     (slope > 0.0 ? lo : hi) = x;
     const double step = curvature < 0.0 ? x - slope / curvature : lo;
     x = step > lo && step < hi ? step : 0.5 * (lo + hi);
   }
-  return {x, t.value(x)};
+  return {x, f.value(x)};
 }
 
-/// The largest t(θ) over θ ∈ [0, π): every 1° (the header says why this brackets the global
-/// maximum), then refined in [θ_best − 1°, θ_best + 1°] (t is π-periodic: the bracket may cross 0).
-Maximum largest_coupling(const AcousticTerms& terms) {
-  const double step = kPi / kSamples;
-  // The sampled directions' cos 2θ, sin 2θ, cos 4θ, sin 4θ, one array each: the values
-  // below are then one vectorised loop.
-  struct Table {
-    std::array<double, kSamples> cos2, sin2, cos4, sin4;
-  };
-  static const Table table = [] {
-    Table d;
+using Samples = std::array<double, kSamples>;
+
+/// The sampled directions' cos 2θ, sin 2θ, cos 4θ, sin 4θ, one array each: a function's
+/// samples are then one vectorised loop.
+struct SampledAngles {
+  Samples cos2, sin2, cos4, sin4;
+};
+const SampledAngles& sampled_angles() {
+  static const SampledAngles table = [] {
+    SampledAngles d;
     for (int k = 0; k < kSamples; ++k) {
       const Harmonics::Angles a(k * (kPi / kSamples));
       d.cos2[k] = a.cos2, d.sin2[k] = a.sin2, d.cos4[k] = a.cos4, d.sin4[k] = a.sin4;
     }
     return d;
   }();
-  const Harmonics t = terms.harmonics();
-  std::array<double, kSamples> values;
+  return table;
+}
+
+Samples sampled(const Harmonics& t) {
+  const SampledAngles& table = sampled_angles();
+  Samples values;
   for (int k = 0; k < kSamples; ++k)
     values[k] = t.t0 + t.c2 * table.cos2[k] + t.s2 * table.sin2[k] + t.c4 * table.cos4[k] + t.s4 * table.sin4[k];
+  return values;
+}
+
+/// −det(G − T(θ)) at the samples, from each T_ab's samples.
+Samples sampled(const CornerDeterminant& f) {
+  std::array<Samples, 4> t;
+  for (int k = 0; k < 4; ++k) t[k] = sampled(f.t[k]);
+  Samples values;
+  for (int k = 0; k < kSamples; ++k)
+    values[k] = -((f.g(0, 0) - t[0][k]) * (f.g(1, 1) - t[3][k]) - (f.g(0, 1) - t[1][k]) * (f.g(1, 0) - t[2][k]));
+  return values;
+}
+
+/// The largest f(θ) over θ ∈ [0, π): every 1° (the header says why this brackets the global
+/// maximum), then refined in [θ_best − 1°, θ_best + 1°] (f is π-periodic: the bracket may cross 0).
+template <class Function>
+Maximum largest(const Function& f) {
+  const double step = kPi / kSamples;
+  const Samples values = sampled(f);
   const int best = static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
   const double best_value = values[best];
   const double lo = (best - 1) * step, hi = (best + 1) * step;
   // A maximum strictly inside a bracket whose ends rise and fall takes Newton's steps; two
-  // maxima within 2° (or a flat t) take the golden section.
-  Maximum found = t.slope(lo) > 0.0 && t.slope(hi) < 0.0 ? newton(t, lo, hi, best * step) : golden_section(t, lo, hi);
+  // maxima within 2° (or a flat f) take the golden section.
+  Maximum found = f.slope(lo) > 0.0 && f.slope(hi) < 0.0 ? newton(f, lo, hi, best * step) : golden_section(f, lo, hi);
   if (best_value > found.value) found = {best * step, best_value};  // never worse than the best sample
   found.theta_rad = std::fmod(found.theta_rad, kPi);
   if (found.theta_rad < 0.0) found.theta_rad += kPi;
   return found;
+}
+
+/// The principal-axis tensor Σ_k v_k e_k⊗e_k of a plane (i, j): (1 + sin x) e_i⊗e_i − (1 − sin x) e_j⊗e_j.
+Eigen::Vector3d plane_gradient(int major, int minor, double sin_angle) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  v[major] = 1.0 + sin_angle;
+  v[minor] = -(1.0 - sin_angle);
+  return v;
+}
+
+/// ∂f/∂κ of f = (σi − σj) + (σi + σj) sin φ − 2c cos φ through φ(κ) and c(κ).
+double yield_slope(double major, double minor, const MohrCoulombStrength& strength, const StrengthSlopes& slopes) {
+  return ((major + minor) * strength.cos_phi + 2.0 * strength.cohesion_Pa * strength.sin_phi) * slopes.friction_rad -
+         2.0 * strength.cos_phi * slopes.cohesion_Pa;
+}
+
+/// The return's two planes at an edge (models/mohr_coulomb_return.hpp), with H_ab of the even split.
+PlasticCorner edge_corner(const PrincipalStresses& principal, bool compression, const MohrCoulombStrength& strength,
+                          const StrengthSlopes& slopes) {
+  const Eigen::Vector3d& s = principal.values();
+  // Compression σ1 = σ2: planes (1,3) and (2,3). Extension σ2 = σ3: planes (1,3) and (1,2).
+  const std::array<std::array<int, 2>, 2> planes = compression ? std::array<std::array<int, 2>, 2>{{{0, 2}, {1, 2}}}
+                                                               : std::array<std::array<int, 2>, 2>{{{0, 2}, {0, 1}}};
+  PlasticCorner corner;
+  for (int k = 0; k < 2; ++k) {
+    corner.yield_normals[k] = principal.with_values(plane_gradient(planes[k][0], planes[k][1], strength.sin_phi));
+    corner.flow_directions[k] = principal.with_values(plane_gradient(planes[k][0], planes[k][1], strength.sin_psi));
+  }
+  // κ̇ = k (λ̇_a + λ̇_b) at the even split, k = √(2/3)|dev(m_a + m_b)|/2 = 1 ∓ sin ψ/3; both
+  // planes share σi + σj (σ1 + σ3), so ∂f_a/∂κ = ∂f_b/∂κ and H_ab = −k ∂f/∂κ for every a, b.
+  const double strain_per_multiplier = compression ? 1.0 - strength.sin_psi / 3.0 : 1.0 + strength.sin_psi / 3.0;
+  corner.hardening_Pa.setConstant(-strain_per_multiplier * yield_slope(s[0], s[2], strength, slopes));
+  return corner;
 }
 
 }  // namespace
@@ -200,7 +359,7 @@ double acoustic_determinant_ratio(const ElasticConstants& elastic, const Plastic
 
 Localisation find_localisation(const ElasticConstants& elastic, const PlasticFlow& flow) {
   const AcousticTerms terms(elastic, &flow);
-  const Maximum top = largest_coupling(terms);
+  const Maximum top = largest(terms.harmonics());
   Localisation out;
   out.band_normal_rad = top.theta_rad;
   out.critical_hardening_Pa = top.value / terms.shear - terms.plastic_stiffness;
@@ -214,15 +373,46 @@ Localisation find_localisation(const ElasticConstants& elastic, const PlasticFlo
   return out;
 }
 
+Eigen::Matrix2d corner_stiffness(const ElasticConstants& elastic, const PlasticCorner& corner) {
+  return CornerTerms(elastic, corner).g;
+}
+
+Eigen::Matrix3d acoustic_tensor(const ElasticConstants& elastic, const PlasticCorner& corner,
+                                const Eigen::Vector3d& n) {
+  return CornerTerms(elastic, corner).tensor(n);
+}
+
+double acoustic_determinant_ratio(const ElasticConstants& elastic, const PlasticCorner& corner, double theta_rad) {
+  return CornerTerms(elastic, corner).ratio(theta_rad);
+}
+
+Localisation find_localisation(const ElasticConstants& elastic, const PlasticCorner& corner) {
+  const CornerTerms terms(elastic, corner);
+  Localisation out;
+  out.critical_hardening_Pa = std::numeric_limits<double>::quiet_NaN();
+  if (!terms.loading_branch()) {
+    out.determinant_ratio = -std::numeric_limits<double>::infinity();
+    out.localised = true;
+    return out;
+  }
+  const CornerDeterminant f = terms.determinant();
+  const Maximum top = largest(f);
+  out.band_normal_rad = top.theta_rad;
+  out.determinant_ratio = -top.value / terms.g.determinant();
+  // det(G − T) = M11 M22 − M12 M21 is judged against its two products, whose difference it is:
+  // its rounding is a few 1e-16 of them, and r's grows as det G shrinks (where the onset is
+  // exact, e.g. a corner that keeps two in-plane stresses equal, r = 0 by construction).
+  const CornerDeterminant::Entries m = f.entries(Harmonics::Angles(top.theta_rad));
+  const double products = std::abs(m.m[0] * m.m[3]) + std::abs(m.m[1] * m.m[2]);
+  out.localised = -top.value <= kSingularAcousticRatio * products;
+  return out;
+}
+
 double mohr_coulomb_softening_modulus(double major, double minor, const MohrCoulombStrength& strength,
                                       const StrengthSlopes& slopes) {
-  // ∂f/∂κ of f = (σ1 − σ3) + (σ1 + σ3) sin φ − 2c cos φ through φ(κ) and c(κ).
-  const double df_dkappa =
-      ((major + minor) * strength.cos_phi + 2.0 * strength.cohesion_Pa * strength.sin_phi) * slopes.friction_rad -
-      2.0 * strength.cos_phi * slopes.cohesion_Pa;
   // κ̇ = √(2/3 ė^p:ė^p) = λ̇ √(2/3) |dev m|, m = diag(1 + sin ψ, 0, −(1 − sin ψ)): (2/3)√(3 + sin²ψ).
   const double strain_per_multiplier = (2.0 / 3.0) * std::sqrt(3.0 + strength.sin_psi * strength.sin_psi);
-  return -strain_per_multiplier * df_dkappa;
+  return -strain_per_multiplier * yield_slope(major, minor, strength, slopes);
 }
 
 MohrCoulombFlow mohr_coulomb_flow(const Voigt& stress, const MohrCoulombStrength& strength,
@@ -241,14 +431,16 @@ MohrCoulombFlow mohr_coulomb_flow(const Voigt& stress, const MohrCoulombStrength
     out.region = ReturnRegion::apex;
   } else if (s[0] - s[1] <= 1e-9 * spread) {
     out.region = ReturnRegion::edge_compression;  // σ1 = σ2 (triaxial compression)
+    out.corner = edge_corner(principal, true, strength, slopes);
   } else if (s[1] - s[2] <= 1e-9 * spread) {
     out.region = ReturnRegion::edge_extension;  // σ2 = σ3 (triaxial extension)
+    out.corner = edge_corner(principal, false, strength, slopes);
   } else {
     out.region = ReturnRegion::plane;
     // f = (σ1 − σ3) + (σ1 + σ3) sin φ − 2c cos φ, g the same with ψ:
     // ∂f/∂σ = (1 + sin φ) e1⊗e1 − (1 − sin φ) e3⊗e3 on σ's own principal axes.
-    out.flow.yield_normal = principal.with_values({1.0 + strength.sin_phi, 0.0, -(1.0 - strength.sin_phi)});
-    out.flow.flow_direction = principal.with_values({1.0 + strength.sin_psi, 0.0, -(1.0 - strength.sin_psi)});
+    out.flow.yield_normal = principal.with_values(plane_gradient(0, 2, strength.sin_phi));
+    out.flow.flow_direction = principal.with_values(plane_gradient(0, 2, strength.sin_psi));
     out.flow.hardening_modulus_Pa = mohr_coulomb_softening_modulus(s[0], s[2], strength, slopes);
   }
   return out;
