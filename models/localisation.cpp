@@ -25,27 +25,73 @@ constexpr int kSamples = 180;  // every 1°: the header says why this finds the 
 
 Eigen::Vector3d in_plane_normal(double theta_rad) { return {std::cos(theta_rad), std::sin(theta_rad), 0.0}; }
 
-/// t(θ) = t0 + c2 cos 2θ + s2 sin 2θ + c4 cos 4θ + s4 sin 4θ, and its derivatives.
-struct Harmonics {
-  double t0 = 0.0, c2 = 0.0, s2 = 0.0, c4 = 0.0, s4 = 0.0;
+/// p(θ) = a_0 + Σ_{k=1..K} (a_k cos 2kθ + b_k sin 2kθ), and its derivatives: t(θ) of one
+/// mechanism pair (K = 2) and det(G − T(θ)) of a corner (K = 4, products of K = 2 ones).
+template <int K>
+struct TrigPolynomial {
+  std::array<double, K + 1> a{}, b{};  ///< b_0 is 0
 
-  /// cos 2θ, sin 2θ, cos 4θ, sin 4θ from one sincos (4θ by the double-angle formulas).
+  /// cos 2kθ, sin 2kθ for k = 0..K from one cos and one sin (Chebyshev's recurrences,
+  /// cos 2(k+1)θ = 2 cos 2θ cos 2kθ − cos 2(k−1)θ, and the same for sin).
   struct Angles {
-    double cos2, sin2, cos4, sin4;
-    explicit Angles(double theta)
-        : cos2(std::cos(2.0 * theta)),
-          sin2(std::sin(2.0 * theta)),
-          cos4(2.0 * cos2 * cos2 - 1.0),
-          sin4(2.0 * sin2 * cos2) {}
+    std::array<double, K + 1> cos, sin;
+    explicit Angles(double theta) {
+      cos[0] = 1.0, sin[0] = 0.0;
+      cos[1] = std::cos(2.0 * theta), sin[1] = std::sin(2.0 * theta);
+      for (int k = 2; k <= K; ++k) {
+        cos[k] = 2.0 * cos[1] * cos[k - 1] - cos[k - 2];
+        sin[k] = 2.0 * cos[1] * sin[k - 1] - sin[k - 2];
+      }
+    }
   };
-  double value(const Angles& a) const { return t0 + c2 * a.cos2 + s2 * a.sin2 + c4 * a.cos4 + s4 * a.sin4; }
-  double slope(const Angles& a) const { return 2.0 * (s2 * a.cos2 - c2 * a.sin2) + 4.0 * (s4 * a.cos4 - c4 * a.sin4); }
-  double curvature(const Angles& a) const {
-    return -4.0 * (c2 * a.cos2 + s2 * a.sin2) - 16.0 * (c4 * a.cos4 + s4 * a.sin4);
+  double value(const Angles& x) const {
+    double sum = a[0];
+    for (int k = 1; k <= K; ++k) {
+      sum += a[k] * x.cos[k];
+      sum += b[k] * x.sin[k];
+    }
+    return sum;
+  }
+  double slope(const Angles& x) const {
+    double sum = 0.0;
+    for (int k = 1; k <= K; ++k) sum += 2.0 * k * (b[k] * x.cos[k] - a[k] * x.sin[k]);
+    return sum;
+  }
+  double curvature(const Angles& x) const {
+    double sum = 0.0;
+    for (int k = 1; k <= K; ++k) sum -= 4.0 * k * k * (a[k] * x.cos[k] + b[k] * x.sin[k]);
+    return sum;
   }
   double value(double theta) const { return value(Angles(theta)); }
   double slope(double theta) const { return slope(Angles(theta)); }
 };
+using Harmonics = TrigPolynomial<2>;
+using CornerHarmonics = TrigPolynomial<4>;
+
+/// p q by the product-to-sum formulas: (a_k cos kφ + b_k sin kφ)(a_l cos lφ + b_l sin lφ) =
+/// ½[(a_k a_l − b_k b_l) cos(k+l)φ + (a_k a_l + b_k b_l) cos(k−l)φ + (a_k b_l + b_k a_l) sin(k+l)φ
+///    + (b_k a_l − a_k b_l) sin(k−l)φ], φ = 2θ, with sin(−mφ) = −sin mφ.
+template <int K, int L>
+TrigPolynomial<K + L> operator*(const TrigPolynomial<K>& p, const TrigPolynomial<L>& q) {
+  TrigPolynomial<K + L> out;
+  for (int k = 0; k <= K; ++k)
+    for (int l = 0; l <= L; ++l) {
+      const double aa = p.a[k] * q.a[l], bb = p.b[k] * q.b[l], ab = p.a[k] * q.b[l], ba = p.b[k] * q.a[l];
+      out.a[k + l] += 0.5 * (aa - bb);
+      out.b[k + l] += 0.5 * (ab + ba);
+      const int m = k - l, sign = m < 0 ? -1 : 1;
+      out.a[sign * m] += 0.5 * (aa + bb);
+      out.b[sign * m] += sign * 0.5 * (ba - ab);
+    }
+  out.b[0] = 0.0;  // sin 0 = 0: what the products put there
+  return out;
+}
+
+template <int K>
+TrigPolynomial<K> operator-(TrigPolynomial<K> p, const TrigPolynomial<K>& q) {
+  for (int k = 0; k <= K; ++k) p.a[k] -= q.a[k], p.b[k] -= q.b[k];
+  return p;
+}
 
 /// t(n) = G (b·n)·(A^e)⁻¹(a·n) = (b·n)·(a·n) − κ (n·b·n)(n·a·n), (A^e)⁻¹ = (I − κ n⊗n)/G,
 /// κ = (λ + G)/(λ + 2G): the H-free part of a mechanism pair's term in det A / det A^e.
@@ -73,11 +119,11 @@ Harmonics coupling_harmonics(const Eigen::Matrix3d& b, const Eigen::Matrix3d& a,
   // (n·b·n)(n·a·n), with cos² 2θ = (1 + cos 4θ)/2, sin² 2θ = (1 − cos 4θ)/2, cos 2θ sin 2θ = sin 4θ/2.
   const double k = coupling;
   Harmonics h;
-  h.t0 = product.x0 - k * (nb.x0 * na.x0 + 0.5 * (nb.x2c * na.x2c + nb.x2s * na.x2s));
-  h.c2 = product.x2c - k * (nb.x0 * na.x2c + na.x0 * nb.x2c);
-  h.s2 = product.x2s - k * (nb.x0 * na.x2s + na.x0 * nb.x2s);
-  h.c4 = -k * 0.5 * (nb.x2c * na.x2c - nb.x2s * na.x2s);
-  h.s4 = -k * 0.5 * (nb.x2c * na.x2s + nb.x2s * na.x2c);
+  h.a[0] = product.x0 - k * (nb.x0 * na.x0 + 0.5 * (nb.x2c * na.x2c + nb.x2s * na.x2s));
+  h.a[1] = product.x2c - k * (nb.x0 * na.x2c + na.x0 * nb.x2c);
+  h.b[1] = product.x2s - k * (nb.x0 * na.x2s + na.x0 * nb.x2s);
+  h.a[2] = -k * 0.5 * (nb.x2c * na.x2c - nb.x2s * na.x2s);
+  h.b[2] = -k * 0.5 * (nb.x2c * na.x2s + nb.x2s * na.x2c);
   return h;
 }
 
@@ -124,45 +170,6 @@ struct AcousticTerms {
   Harmonics harmonics() const { return coupling_harmonics(b, a, coupling); }
 };
 
-/// F(θ) = −det(G − T(θ)) of a corner, T_ab = t_ab/G from the harmonics of each pair (b_a, a_b):
-/// the search maximises it (r = −F/det G), with its slope and curvature from the product rule.
-struct CornerDeterminant {
-  std::array<Harmonics, 4> t;  ///< T_11, T_12, T_21, T_22
-  Eigen::Matrix2d g;
-
-  /// M = G − T and its first two derivatives (M' = −T', M'' = −T'') at one angle, row-major.
-  struct Entries {
-    std::array<double, 4> m, dm, ddm;
-  };
-  Entries entries(const Harmonics::Angles& x) const {
-    Entries e;
-    const std::array<double, 4> gg = {g(0, 0), g(0, 1), g(1, 0), g(1, 1)};
-    for (int k = 0; k < 4; ++k) {
-      e.m[k] = gg[k] - t[k].value(x);
-      e.dm[k] = -t[k].slope(x);
-      e.ddm[k] = -t[k].curvature(x);
-    }
-    return e;
-  }
-  double value(const Harmonics::Angles& x) const {
-    std::array<double, 4> m;
-    const std::array<double, 4> gg = {g(0, 0), g(0, 1), g(1, 0), g(1, 1)};
-    for (int k = 0; k < 4; ++k) m[k] = gg[k] - t[k].value(x);
-    return -(m[0] * m[3] - m[1] * m[2]);
-  }
-  double slope(const Harmonics::Angles& x) const {
-    const Entries e = entries(x);
-    return -(e.dm[0] * e.m[3] + e.m[0] * e.dm[3] - e.dm[1] * e.m[2] - e.m[1] * e.dm[2]);
-  }
-  double curvature(const Harmonics::Angles& x) const {
-    const Entries e = entries(x);
-    return -(e.ddm[0] * e.m[3] + 2.0 * e.dm[0] * e.dm[3] + e.m[0] * e.ddm[3] -
-             (e.ddm[1] * e.m[2] + 2.0 * e.dm[1] * e.dm[2] + e.m[1] * e.ddm[2]));
-  }
-  double value(double theta) const { return value(Harmonics::Angles(theta)); }
-  double slope(double theta) const { return slope(Harmonics::Angles(theta)); }
-};
-
 /// What a corner's A(n) needs, formed once per point: a_a = D:m_a, b_a = D:n_a and G.
 struct CornerTerms {
   double lambda = 0.0, shear = 0.0, coupling = 0.0;
@@ -206,16 +213,45 @@ struct CornerTerms {
     return (g - t).determinant() / g.determinant();
   }
 
-  CornerDeterminant determinant() const {
-    CornerDeterminant f;
-    f.g = g;
+  /// T_ab(θ) = t(b_a, a_b)/G as harmonics, row-major (T_11, T_12, T_21, T_22).
+  std::array<Harmonics, 4> coupling_harmonics_over_shear() const {
+    std::array<Harmonics, 4> t;
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
-        Harmonics h = coupling_harmonics(b[i], a[j], coupling);
-        for (double* x : {&h.t0, &h.c2, &h.s2, &h.c4, &h.s4}) *x /= shear;
-        f.t[2 * i + j] = h;
+        Harmonics& h = t[2 * i + j];
+        h = coupling_harmonics(b[i], a[j], coupling);
+        for (int k = 0; k <= 2; ++k) h.a[k] /= shear, h.b[k] /= shear;
       }
-    return f;
+    return t;
+  }
+};
+
+/// M(θ) = G − T(θ) entry by entry, and F(θ) = −det M(θ) = M12 M21 − M11 M22: what the search
+/// maximises (r = −F/det G).
+struct CornerDeterminant {
+  std::array<Harmonics, 4> m;  ///< M_11, M_12, M_21, M_22
+  CornerHarmonics minus_determinant;
+
+  explicit CornerDeterminant(const CornerTerms& terms) {
+    const std::array<Harmonics, 4> t = terms.coupling_harmonics_over_shear();
+    const std::array<double, 4> g = {terms.g(0, 0), terms.g(0, 1), terms.g(1, 0), terms.g(1, 1)};
+    for (int k = 0; k < 4; ++k) {
+      Harmonics constant;
+      constant.a[0] = g[k];
+      m[k] = constant - t[k];
+    }
+    minus_determinant = m[1] * m[2] - m[0] * m[3];
+  }
+  /// A bound on |M11 M22| + |M12 M21| over θ (each entry's harmonics' absolute sum): the size
+  /// of the two products det M is the difference of, hence of its rounding, wherever it is
+  /// evaluated and however its harmonics are formed.
+  double products_bound() const {
+    auto size = [](const Harmonics& h) {
+      double sum = 0.0;
+      for (int k = 0; k <= 2; ++k) sum += std::abs(h.a[k]) + std::abs(h.b[k]);
+      return sum;
+    };
+    return size(m[0]) * size(m[3]) + size(m[1]) * size(m[2]);
   }
 };
 
@@ -225,8 +261,8 @@ struct Maximum {
 
 /// Golden section for the largest f on [lo, hi], stopping at 1e-10 rad (about 40 steps from
 /// 2°): near √ε, where f stops changing in double precision at a quadratic maximum.
-template <class Function>
-Maximum golden_section(const Function& f, double lo, double hi) {
+template <int K>
+Maximum golden_section(const TrigPolynomial<K>& f, double lo, double hi) {
   constexpr double kInverseGolden = 0.6180339887498949;  // (√5 − 1)/2
   double x1 = hi - kInverseGolden * (hi - lo), x2 = lo + kInverseGolden * (hi - lo);
   double f1 = f.value(x1), f2 = f.value(x2);
@@ -245,11 +281,11 @@ Maximum golden_section(const Function& f, double lo, double hi) {
 /// f' = 0 between lo (f' > 0) and hi (f' < 0): Newton's steps, a bisection wherever a step
 /// would leave the bracket or f'' ≥ 0, until Newton's step is below 1e-13 rad (a few steps
 /// from 1°; near the rounding of θ).
-template <class Function>
-Maximum newton(const Function& f, double lo, double hi, double start) {
+template <int K>
+Maximum newton(const TrigPolynomial<K>& f, double lo, double hi, double start) {
   double x = start;
   for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
-    const Harmonics::Angles at(x);
+    const typename TrigPolynomial<K>::Angles at(x);
     const double slope = f.slope(at), curvature = f.curvature(at);
     if (curvature < 0.0 && std::abs(slope) <= 1e-13 * -curvature) break;
     (slope > 0.0 ? lo : hi) = x;
@@ -261,49 +297,57 @@ Maximum newton(const Function& f, double lo, double hi, double start) {
 
 using Samples = std::array<double, kSamples>;
 
-/// The sampled directions' cos 2θ, sin 2θ, cos 4θ, sin 4θ, one array each: a function's
+/// The sampled directions' cos 2kθ and sin 2kθ, k = 1..4, one array each: a polynomial's
 /// samples are then one vectorised loop.
 struct SampledAngles {
-  Samples cos2, sin2, cos4, sin4;
+  std::array<Samples, 5> cos, sin;  ///< [k][sample]; k = 0 unused
 };
 const SampledAngles& sampled_angles() {
   static const SampledAngles table = [] {
     SampledAngles d;
-    for (int k = 0; k < kSamples; ++k) {
-      const Harmonics::Angles a(k * (kPi / kSamples));
-      d.cos2[k] = a.cos2, d.sin2[k] = a.sin2, d.cos4[k] = a.cos4, d.sin4[k] = a.sin4;
+    for (int i = 0; i < kSamples; ++i) {
+      const CornerHarmonics::Angles x(i * (kPi / kSamples));
+      for (int k = 1; k <= 4; ++k) d.cos[k][i] = x.cos[k], d.sin[k][i] = x.sin[k];
     }
     return d;
   }();
   return table;
 }
 
-Samples sampled(const Harmonics& t) {
+template <int K>
+Samples sampled(const TrigPolynomial<K>& p) {
   const SampledAngles& table = sampled_angles();
   Samples values;
-  for (int k = 0; k < kSamples; ++k)
-    values[k] = t.t0 + t.c2 * table.cos2[k] + t.s2 * table.sin2[k] + t.c4 * table.cos4[k] + t.s4 * table.sin4[k];
-  return values;
-}
-
-/// −det(G − T(θ)) at the samples, from each T_ab's samples.
-Samples sampled(const CornerDeterminant& f) {
-  std::array<Samples, 4> t;
-  for (int k = 0; k < 4; ++k) t[k] = sampled(f.t[k]);
-  Samples values;
-  for (int k = 0; k < kSamples; ++k)
-    values[k] = -((f.g(0, 0) - t[0][k]) * (f.g(1, 1) - t[3][k]) - (f.g(0, 1) - t[1][k]) * (f.g(1, 0) - t[2][k]));
+  for (int i = 0; i < kSamples; ++i) {  // each sample whole in registers, the samples side by side
+    double sum = p.a[0];
+    for (int k = 1; k <= K; ++k) {
+      sum += p.a[k] * table.cos[k][i];
+      sum += p.b[k] * table.sin[k][i];
+    }
+    values[i] = sum;
+  }
   return values;
 }
 
 /// The largest f(θ) over θ ∈ [0, π): every 1° (the header says why this brackets the global
 /// maximum), then refined in [θ_best − 1°, θ_best + 1°] (f is π-periodic: the bracket may cross 0).
-template <class Function>
-Maximum largest(const Function& f) {
+template <int K>
+Maximum largest(const TrigPolynomial<K>& f) {
   const double step = kPi / kSamples;
   const Samples values = sampled(f);
-  const int best = static_cast<int>(std::max_element(values.begin(), values.end()) - values.begin());
-  const double best_value = values[best];
+  // The first largest sample, as std::max_element finds it, in two passes without its chain of
+  // dependent compares (measured: that chain took 60 % of the whole search): the maximum over
+  // twelve running maxima side by side, then where it first occurs.
+  constexpr int kLanes = 12;
+  static_assert(kSamples % kLanes == 0);
+  std::array<double, kLanes> lanes;
+  std::copy_n(values.begin(), kLanes, lanes.begin());
+  for (int k = kLanes; k < kSamples; k += kLanes)
+    for (int j = 0; j < kLanes; ++j) lanes[j] = values[k + j] > lanes[j] ? values[k + j] : lanes[j];
+  double best_value = lanes[0];
+  for (const double v : lanes) best_value = v > best_value ? v : best_value;
+  const auto first = std::find(values.begin(), values.end(), best_value);
+  const int best = first == values.end() ? 0 : static_cast<int>(first - values.begin());  // end: NaN samples
   const double lo = (best - 1) * step, hi = (best + 1) * step;
   // A maximum strictly inside a bracket whose ends rise and fall takes Newton's steps; two
   // maxima within 2° (or a flat f) take the golden section.
@@ -395,16 +439,14 @@ Localisation find_localisation(const ElasticConstants& elastic, const PlasticCor
     out.localised = true;
     return out;
   }
-  const CornerDeterminant f = terms.determinant();
-  const Maximum top = largest(f);
+  const CornerDeterminant f(terms);
+  const Maximum top = largest(f.minus_determinant);
   out.band_normal_rad = top.theta_rad;
   out.determinant_ratio = -top.value / terms.g.determinant();
   // det(G − T) = M11 M22 − M12 M21 is judged against its two products, whose difference it is:
   // its rounding is a few 1e-16 of them, and r's grows as det G shrinks (where the onset is
   // exact, e.g. a corner that keeps two in-plane stresses equal, r = 0 by construction).
-  const CornerDeterminant::Entries m = f.entries(Harmonics::Angles(top.theta_rad));
-  const double products = std::abs(m.m[0] * m.m[3]) + std::abs(m.m[1] * m.m[2]);
-  out.localised = -top.value <= kSingularAcousticRatio * products;
+  out.localised = -top.value <= kSingularAcousticRatio * f.products_bound();
   return out;
 }
 
