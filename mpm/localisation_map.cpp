@@ -10,7 +10,8 @@ namespace ffp::mpm {
 
 namespace {
 
-/// One particle on the surface: counts and fields.
+/// One particle on the surface: counts and fields. A face takes its plane's tangent, an edge
+/// the corner tangent of its two planes; the apex has none.
 void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, const StrengthSlopes& slopes,
               const Voigt& stress, std::size_t i, LocalisationMap& map) {
   const MohrCoulombStrength strength =
@@ -22,16 +23,12 @@ void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, c
     map.place[i] = YieldPlace::apex;
     return;
   }
-  if (at.region != ReturnRegion::plane) {
-    ++map.on_edge;
-    map.place[i] = YieldPlace::edge;
-    return;
-  }
-  ++map.on_face;
-  map.place[i] = YieldPlace::face;
-  const Localisation found = find_localisation(elastic, at.flow);
+  const bool face = at.region == ReturnRegion::plane;
+  ++(face ? map.on_face : map.on_edge);
+  map.place[i] = face ? YieldPlace::face : YieldPlace::edge;
+  const Localisation found = face ? find_localisation(elastic, at.flow) : find_localisation(elastic, at.corner);
   if (!found.localised) return;
-  ++map.localised_count;
+  ++(face ? map.localised_on_face : map.localised_on_edge);
   map.place[i] = YieldPlace::localised;
   map.localised[i] = 1.0;
   map.band_angle_deg[i] = found.band_normal_rad / kDegree;

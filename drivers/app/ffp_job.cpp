@@ -14,8 +14,9 @@
 /// figures (ffp_summary.hpp). An ffp (not a cpt) run also writes record.csv and plots/record_profiles.png: its
 /// deceleration interpreted as a measured drop is (record_output.hpp).
 /// With output.localisation: history columns localised_fraction (the share of the soil particles
-/// on a face of the yield surface whose tangent has lost ellipticity), yield_face_particles,
-/// yield_edge_particles and yield_apex_particles (not evaluated); fields localised (0/1) and
+/// on a face or an edge of the yield surface whose tangent has lost ellipticity),
+/// yield_face_particles, yield_edge_particles, yield_apex_particles (not evaluated),
+/// localised_face_particles and localised_edge_particles; fields localised (0/1) and
 /// band_angle_deg (band normal from the r axis); summary localised_fraction_max and
 /// localised_time_s (the row where it is reached); plots/localisation.png (share and counts
 /// against time) and plots/localisation_tT.TTT.png (the map). Evaluated at the rows and fields only.
@@ -150,7 +151,8 @@ CsvTable PenetrometerJob::history_table() const {
   if (!run_->deformable())  // the rigid body's impulse split by where it is taken (PenetrometerState)
     for (const char* c : {"cone_impulse_N_s", "cone_normal_impulse_N_s", "shaft_impulse_N_s"}) columns.emplace_back(c);
   if (scene_.output.localisation)
-    for (const char* c : {"localised_fraction", "yield_face_particles", "yield_edge_particles", "yield_apex_particles"})
+    for (const char* c : {"localised_fraction", "yield_face_particles", "yield_edge_particles", "yield_apex_particles",
+                          "localised_face_particles", "localised_edge_particles"})
       columns.emplace_back(c);
   return CsvTable(columns);
 }
@@ -170,11 +172,16 @@ void PenetrometerJob::record_row(CsvTable& history, Extremes& e) {
   if (scene_.output.localisation) {
     const mpm::LocalisationMap map = soil_localisation();
     const double fraction = map.localised_fraction();
-    row.insert(row.end(), {fraction, static_cast<double>(map.on_face), static_cast<double>(map.on_edge),
-                           static_cast<double>(map.at_apex)});
-    localisation_rows_.push_back({s.time_s, fraction, static_cast<double>(map.on_face),
-                                  static_cast<double>(map.localised_count),
-                                  static_cast<double>(map.on_edge + map.at_apex)});
+    const LocalisationRow counts{s.time_s,
+                                 fraction,
+                                 static_cast<double>(map.on_face),
+                                 static_cast<double>(map.on_edge),
+                                 static_cast<double>(map.at_apex),
+                                 static_cast<double>(map.localised_on_face),
+                                 static_cast<double>(map.localised_on_edge)};
+    row.insert(row.end(),
+               {fraction, counts.face, counts.edge, counts.apex, counts.localised_face, counts.localised_edge});
+    localisation_rows_.push_back(counts);
     if (fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
   }
   history.add_row(row);

@@ -133,9 +133,9 @@ void write_localisation_map(const mpm::FfpRun& run, const std::string& name, con
         place.push_back(0.5);
         break;
       case mpm::YieldPlace::face:
+      case mpm::YieldPlace::edge:
         place.push_back(1.5);
         break;
-      case mpm::YieldPlace::edge:
       case mpm::YieldPlace::apex:
         place.push_back(2.5);
         break;
@@ -147,26 +147,28 @@ void write_localisation_map(const mpm::FfpRun& run, const std::string& name, con
   const Categories places{
       "defined (0 '#d0d0d0', 1 '#d0d0d0', 1 '#4575b4', 2 '#4575b4', 2 '#fdae61', 3 '#fdae61', 3 '#d73027', "
       "4 '#d73027')",
-      "('elastic' 0.5, 'on a face' 1.5, 'edge/apex' 2.5, 'localised' 3.5)"};
+      "('elastic' 0.5, 'elliptic' 1.5, 'apex' 2.5, 'localised' 3.5)"};
   write_soil_map(run, map_title(run, name, "loss of ellipticity"), "", std::move(place), 4.0,
                  plots / map_file("localisation", s.time_s), &places);
 }
 
 void write_localisation_plot(std::span<const LocalisationRow> rows, const std::string& name, const fs::path& plots) {
-  std::vector<double> t, fraction, face, localised, edge_or_apex;
+  std::vector<double> t, fraction, face, edge, localised, apex;
   for (const LocalisationRow& r : rows) {
     t.push_back(r.time_s);
     fraction.push_back(r.fraction);
     face.push_back(r.face);
-    localised.push_back(r.localised);
-    edge_or_apex.push_back(r.edge_or_apex);
+    edge.push_back(r.edge);
+    localised.push_back(r.localised_face + r.localised_edge);
+    apex.push_back(r.apex);
   }
-  Plot counts = line_plot(t, face, "time (s)", "soil particles", "yielding particles", "on a face (evaluated)");
-  counts.series.push_back({t, localised, "localised"});
-  counts.series.push_back({t, edge_or_apex, "on an edge or at the apex (not evaluated)"});
+  Plot counts = line_plot(t, face, "time (s)", "soil particles", "yielding particles", "on a face");
+  counts.series.push_back({t, edge, "on an edge"});
+  counts.series.push_back({t, localised, "localised (face or edge)"});
+  counts.series.push_back({t, apex, "at the apex (not evaluated)"});
   counts.key_position = "top right";
   write_png_stack({line_plot(t, fraction, "time (s)", "localised share",
-                             name + ": localised share of the particles on a face", name),
+                             name + ": localised share of the particles on a face or an edge", name),
                    counts},
                   plots / "localisation.png");
 }

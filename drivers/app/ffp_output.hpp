@@ -23,18 +23,18 @@ void write_strain_map(const mpm::FfpRun& run, const std::string& name, double co
 void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const std::filesystem::path& plots);
 
 /// With output.localisation: the soil's particles by where their stress sits (inside the
-/// yield surface, on a face and elliptic, on an edge or at the apex and not evaluated,
+/// yield surface, on a face or an edge and elliptic, at the apex and not evaluated,
 /// localised) with the outline, plots/localisation_tT.TTT.png.
 void write_localisation_map(const mpm::FfpRun& run, const std::string& name, const mpm::LocalisationMap& map,
                             const std::filesystem::path& plots);
 
-/// One history row of the localisation: the localised share of the particles on a face,
-/// and the counts.
+/// One history row of the localisation: the localised share of the particles on a face or an
+/// edge, and the counts.
 struct LocalisationRow {
-  double time_s, fraction, face, localised, edge_or_apex;
+  double time_s, fraction, face, edge, apex, localised_face, localised_edge;
 };
-/// The localised share against time over the counts (on a face, localised, on an edge or
-/// at the apex): plots/localisation.png.
+/// The localised share against time over the counts (on a face, on an edge, localised, at
+/// the apex): plots/localisation.png.
 void write_localisation_plot(std::span<const LocalisationRow> rows, const std::string& name,
                              const std::filesystem::path& plots);
 

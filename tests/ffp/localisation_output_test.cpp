@@ -54,10 +54,20 @@ TEST_CASE("reference FFP on 2 cm with output.localisation: the sheared sand has 
   INFO("localised fraction: max " << most << " at " << summary["localised_time_s"].get<double>()
                                   << " s; last row: face " << face.back() << ", edge " << edge.back() << ", apex "
                                   << apex.back());
+  // The share is of the evaluated particles, face and edge (the apex is not tested).
+  const auto& on_face = on.column("localised_face_particles");
+  const auto& on_edge = on.column("localised_edge_particles");
+  for (std::size_t k = 0; k < fraction.size(); ++k) {
+    CHECK(on_face[k] <= face[k]);
+    CHECK(on_edge[k] <= edge[k]);
+    if (face[k] + edge[k] > 0.0)  // the CSV has 10 digits
+      CHECK(fraction[k] == Approx((on_face[k] + on_edge[k]) / (face[k] + edge[k])).epsilon(1e-9));
+  }
   CHECK(fraction.front() == 0.0);  // at rest before impact (K0 state inside the surface)
   CHECK(face.back() > 0.0);
-  // Non-associated (ψ = 0) perfectly plastic MC: a yielding particle whose band plane
-  // is the r–z plane has r_min = −0.074 (models/localisation tests), so sheared sand localises.
+  // Non-associated (ψ = 0) perfectly plastic MC: a face particle whose band plane is the
+  // r–z plane has r_min = −0.074, an edge with θθ in its pair −0.08 or −0.05 (models/localisation
+  // tests), so sheared sand localises.
   CHECK(most > 0.1);
   CHECK(most <= 1.0);
   CHECK(summary["localised_fraction_max"].get<double>() == Approx(most).epsilon(1e-9));  // the CSV has 10 digits
