@@ -2,6 +2,29 @@
 
 namespace ffp::mpm {
 
+namespace {
+
+/// A saturated body's stages, around the dry step's (docs/theory.md#saturated): the liquid is
+/// mapped and its pore pressure pushes both phases after the solid's internal force; the liquid
+/// is integrated before the solid (whose acceleration takes −M̄_w a_w), and before any local
+/// damping, which then sees the mixture's whole force; the liquid's particles follow the
+/// solid's; the storage equation takes both phases' strains before the effective stress.
+void insert_two_phase_stages(StageList& list, const Simulation& s) {
+  list.insert_after("compute_internal_forces", {"map_liquid_to_grid", map_liquid_to_grid});
+  list.insert_after("map_liquid_to_grid", {"add_pore_pressure_forces", add_pore_pressure_forces});
+  list.insert_before(list.contains("apply_local_damping") ? "apply_local_damping" : "integrate_grid",
+                     {"integrate_liquid", integrate_liquid});
+  list.insert_after("apply_boundary_conditions",
+                    {"apply_liquid_boundary_conditions", apply_liquid_boundary_conditions});
+  list.insert_after("update_particles", {"update_liquid_particles", update_liquid_particles});
+  list.insert_before("update_stresses", {"compute_liquid_strain", compute_liquid_strain});
+  list.insert_before("update_stresses", {"update_pore_pressure", update_pore_pressure});
+  list.insert_after(s.settings.fixed_dt_s ? "check_time_step" : "update_time_step",
+                    {"limit_two_phase_time_step", limit_two_phase_time_step});
+}
+
+}  // namespace
+
 StageList build_stages(const Simulation& s) {
   StageList list;
   list.append({"reset_grid", reset_grid});
@@ -32,6 +55,7 @@ StageList build_stages(const Simulation& s) {
   list.append({"update_stresses", update_stresses});
   list.append({s.settings.fixed_dt_s ? "check_time_step" : "update_time_step", update_time_step});
   if (s.micropolar.active()) insert_micropolar_stages(list, s.settings.transfer);
+  if (s.two_phase) insert_two_phase_stages(list, s);
   return list;
 }
 

@@ -65,10 +65,11 @@ void for_each_seed(const GridAxis& R, const GridAxis& Z, const BodyDescription& 
 
 }  // namespace
 
-void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index, double gravity_m_s2,
-                           Particles& particles, std::span<const SeedingZone> zones) {
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
+                           double geostatic_unit_weight_N_m3, Particles& particles,
+                           std::span<const SeedingZone> zones) {
   check_body(body, body_index, zones);
-  const double unit_weight = body.density_kg_m3 * gravity_m_s2;
+  const double unit_weight = geostatic_unit_weight_N_m3;
   for_each_seed(grid.r, grid.z, body, body_index, zones, [&](double r, double z, double hr, double hz) {
     const std::size_t p = particles.size();
     particles.resize(p + 1);

@@ -14,11 +14,13 @@ namespace ffp::mpm {
 /// that lie inside the region; A_p is the sub-cell area, V_p = r_p·A_p,
 /// m_p = ρ·V_p, GIMP half-lengths half the sub-cell sides. Cells are visited
 /// along the longer grid direction first, so that the particles of one
-/// ParticleBins strip sit together in memory. Sets the K0 stress when asked
-/// (unit weight ρ·g). Cells whose centre lies in one of the body's seeding
-/// zones are seeded at the zone's spacing instead.
-void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index, double gravity_m_s2,
-                           Particles& particles, std::span<const SeedingZone> zones = {});
+/// ParticleBins strip sit together in memory. Sets the K0 stress when asked, with
+/// the unit weight γ of its vertical stress (ρ·g; a saturated body's effective stress
+/// takes the buoyant γ' = γ_sat − γ_w). Cells whose centre lies in one of the body's
+/// seeding zones are seeded at the zone's spacing instead.
+void append_body_particles(const Grid& grid, const BodyDescription& body, std::uint8_t body_index,
+                           double geostatic_unit_weight_N_m3, Particles& particles,
+                           std::span<const SeedingZone> zones = {});
 
 /// How many particles append_body_particles would make on a grid with these
 /// axes, without making them; counting stops at `limit` (then the result is

@@ -71,4 +71,18 @@ double GridAxis::hat_integral(int node, double a, double b) const {
   return total;
 }
 
+double GridAxis::hat_moment(int node, double a, double b) const {
+  double total = 0.0;
+  // On each of the node's two cells N x is quadratic: Simpson's rule is exact.
+  for (const int other : {node - 1, node + 1}) {
+    if (other < 0 || other > cells()) continue;
+    const double x_node = coordinate(node), x_other = coordinate(other);
+    const double lo = std::max(a, std::min(x_node, x_other)), hi = std::min(b, std::max(x_node, x_other));
+    if (!(hi > lo)) continue;
+    const auto moment = [&](double x) { return (x - x_other) / (x_node - x_other) * x; };
+    total += (hi - lo) / 6.0 * (moment(lo) + 4.0 * moment(0.5 * (lo + hi)) + moment(hi));
+  }
+  return total;
+}
+
 }  // namespace ffp::mpm

@@ -49,6 +49,9 @@ class GridAxis {
 
   /// ∫_a^b N_node(x) dx of the node's hat function (exact, any spacing).
   double hat_integral(int node, double a, double b) const;
+  /// ∫_a^b N_node(x) x dx (exact, any spacing): per radian, the area a node of the radial
+  /// axis takes on a face of normal z, whose element is r dθ dr.
+  double hat_moment(int node, double a, double b) const;
 
  private:
   void build_lookup();

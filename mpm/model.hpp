@@ -17,6 +17,7 @@
 #include "models/micropolar.hpp"
 #include "mpm/boundary_conditions.hpp"
 #include "mpm/material_group.hpp"
+#include "mpm/pore_fluid.hpp"
 #include "mpm/shape_functions.hpp"
 
 namespace ffp::mpm {
@@ -103,20 +104,26 @@ struct BodyDescription {
   /// A micropolar (Cosserat) body: the law's return unchanged on the symmetric strain, plus
   /// a micro-rotation and the linear elastic micro terms (mpm/micropolar.hpp). None: classical.
   std::optional<MicropolarParameters> micropolar = std::nullopt;
+  /// A saturated (two-phase) body: its pores hold the model's PoreFluid, and
+  /// density_kg_m3 is its dry density (mpm/pore_fluid.hpp). None: a dry body.
+  std::optional<SaturatedSoil> saturated = std::nullopt;
 };
 
-enum class Side : std::uint8_t { inner, outer };
+enum class Side : std::uint8_t { inner, outer, top };
 using SideName = std::pair<Side, std::string_view>;
 /// The scene's names of Side, in the order messages list them.
-inline constexpr auto kSideNames = std::to_array<SideName>({{Side::inner, "inner"}, {Side::outer, "outer"}});
+inline constexpr auto kSideNames =
+    std::to_array<SideName>({{Side::inner, "inner"}, {Side::outer, "outer"}, {Side::top, "top"}});
 inline std::string to_string(Side s) { return std::string(std::ranges::find(kSideNames, s, &SideName::first)->second); }
 
 /// A normal pressure on the inner or outer grid line r = r_0 / r_max, over
-/// z_min ≤ z ≤ z_max (the body's face must lie on that grid line).
+/// z_min ≤ z ≤ z_max, or on the top grid line z = z_max over r_min ≤ r ≤ r_max
+/// (the body's face must lie on that grid line).
 struct SurfacePressure {
   Side side = Side::inner;
-  double z_min_m = 0.0, z_max_m = 0.0;
+  double z_min_m = 0.0, z_max_m = 0.0;               ///< inner, outer: the loaded band
   std::function<double(double time_s)> pressure_Pa;  ///< compression positive
+  double r_min_m = 0.0, r_max_m = 0.0;               ///< top: the loaded band
 };
 
 struct ModelDescription {
@@ -133,6 +140,9 @@ struct ModelDescription {
   std::vector<SurfacePressure> pressures;
   SolverSettings solver;
   std::vector<SeedingZone> seeding_zones;  ///< first matching zone wins; none: bodies' particles per cell
+  /// The pore fluid of the saturated bodies and which sides drain it (unused without one).
+  PoreFluid fluid;
+  DrainageConditions drainage;
 };
 
 }  // namespace ffp::mpm

@@ -38,7 +38,8 @@ Simulation::Simulation(const ModelDescription& model)
     if (d.initial_stress && !gravity_m_s2)
       throw std::invalid_argument("body " + d.name + ": a K0 initial stress needs gravity");
     const std::size_t begin = particles.size();
-    append_body_particles(grid, d, static_cast<std::uint8_t>(b), gravity_m_s2.value_or(0.0), particles,
+    append_body_particles(grid, d, static_cast<std::uint8_t>(b),
+                          geostatic_unit_weight(d, model.fluid, gravity_m_s2.value_or(0.0)), particles,
                           model.seeding_zones);
     if (particles.size() == begin) throw std::invalid_argument("body " + d.name + " has no particle inside the grid");
     groups.emplace_back(d.name, d.law, d.density_kg_m3);
@@ -69,6 +70,9 @@ Simulation::Simulation(const ModelDescription& model)
     }
   }
 
+  if (std::ranges::any_of(model.bodies, [](const BodyDescription& d) { return d.saturated.has_value(); }))
+    two_phase = make_two_phase(model, grid, particles);
+
   const double lightest = *std::min_element(particles.mass.begin(), particles.mass.end());
   // Far below any real nodal mass, far above round-off: only truly empty nodes.
   mass_floor_kg = 1e-12 * lightest;
@@ -80,6 +84,7 @@ Simulation::Simulation(const ModelDescription& model)
   stages = build_stages(*this);
 
   dt_limit_s = cfl_time_step_limit(*this);
+  if (two_phase) dt_limit_s = std::min(dt_limit_s, two_phase_time_step_limit(*this));
   dt_s = settings.fixed_dt_s ? *settings.fixed_dt_s : settings.courant * dt_limit_s;
   dt_next_s = dt_s;
 }

@@ -19,6 +19,7 @@
 #include "mpm/shape_functions.hpp"
 #include "mpm/signal_maxima.hpp"
 #include "mpm/stage_list.hpp"
+#include "mpm/two_phase.hpp"
 
 namespace ffp::mpm {
 
@@ -84,6 +85,8 @@ class Simulation {
   std::vector<double> absorbing_displacement_r, absorbing_displacement_z;
   MicropolarFields micropolar;  ///< the micropolar bodies' fields (inactive when there are none)
   long wall_clamps = 0;         ///< particle moves stopped at a wall or the axis (should stay 0)
+  /// The pore fluid of the saturated bodies (mpm/two_phase.hpp); none when every body is dry.
+  std::optional<TwoPhase> two_phase;
   /// Particles [0, main_step_end) are moved, strained and stressed by the step's stages;
   /// those after it belong to a body that takes its own substeps inside the step
   /// (mpm/body_subcycle.hpp) and only lend their mass and momentum to the grid.
@@ -126,5 +129,9 @@ double cfl_time_step_limit(const Simulation& simulation, const std::vector<std::
 /// The same limit for one group alone (one of simulation.groups), its p-wave included (a
 /// subcycled body's substep).
 double group_time_step_limit(const Simulation& simulation, const MaterialGroup& group);
+
+/// The critical step of the explicit two-phase scheme (mieremet_time_step, L = h_min) at the
+/// stiffest saturated particle, its current porosity and permeability; +∞ without a saturated body.
+double two_phase_time_step_limit(const Simulation& simulation);
 
 }  // namespace ffp::mpm

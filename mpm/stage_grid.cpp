@@ -32,11 +32,18 @@ void apply_gravity(Simulation& s) {
   }
 }
 
-// f_i,r = ± p(t) · r_side · ∫_{z_min}^{z_max} N_j(z) dz  (per radian: the face element is r dθ dz)
+// f_i,r = ± p(t) · r_side · ∫_{z_min}^{z_max} N_j(z) dz  (per radian: the face element is r dθ dz);
+// on the top side f_i,z = −p(t) · ∫_{r_min}^{r_max} N_i(r) r dr (the face element is r dθ dr).
 void apply_surface_pressure(Simulation& s) {
   NodalField& f = s.grid.fields[0];
   for (const SurfacePressure& load : s.pressures) {
     const double p = load.pressure_Pa(s.time_s);
+    if (load.side == Side::top) {
+      const int j = s.grid.z.nodes() - 1;
+      for (int i = 0; i < s.grid.r.nodes(); ++i)
+        f.external_force_z[s.grid.node(i, j)] -= p * s.grid.r.hat_moment(i, load.r_min_m, load.r_max_m);
+      continue;
+    }
     const bool inner = load.side == Side::inner;
     const int i = inner ? 0 : s.grid.r.nodes() - 1;
     const double r = s.grid.r.coordinate(i);

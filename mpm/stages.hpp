@@ -60,4 +60,14 @@ void update_particle_micro_rotation(Simulation& s);  ///< FLIP/PIC ω̇_p
 void map_micro_spin_to_grid(Simulation& s);          ///< MUSL: ω̇_i = Σ S m j ω̇_p / Θ_i
 void update_micropolar_stresses(Simulation& s);      ///< ω_p, skew and couple stresses
 
+// Saturated bodies (mpm/two_phase.hpp, mpm/stage_two_phase.cpp), inserted by build_stages.
+void map_liquid_to_grid(Simulation& s);                ///< M_w, M̄_w, liquid momentum, drag Q
+void add_pore_pressure_forces(Simulation& s);          ///< f_e of the excess p − p_h (cell-smoothed) on both phases
+void integrate_liquid(Simulation& s);                  ///< a_w with drag, v_w^{n+1}; M̄_w (g − a_w) on the solid
+void apply_liquid_boundary_conditions(Simulation& s);  ///< v_w,n = 0 on impermeable sides and the axis
+void update_liquid_particles(Simulation& s);           ///< v_w,p FLIP/PIC; MUSL: the liquid's remap
+void compute_liquid_strain(Simulation& s);             ///< Δε_v,w = Δt ∇·v_w (hoop term included)
+void update_pore_pressure(Simulation& s);              ///< storage equation, cavitation floor, porosity
+void limit_two_phase_time_step(Simulation& s);         ///< Δt ≤ C · Mieremet's two-phase step
+
 }  // namespace ffp::mpm
