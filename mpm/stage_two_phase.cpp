@@ -106,7 +106,7 @@ void add_pore_pressure_forces(Simulation& s) {
   NodalField& solid = solid_field(s);
   const Particles& P = s.particles;
   const std::vector<double> limit = cell_mean_density_limits(s);
-  const auto excess = [&](std::size_t p) { return t.pore_pressure[p] - t.hydrostatic_pressure(P.z[p]); };
+  const auto excess = [&](std::size_t p) { return t.excess_pressure(P, p); };
   if (smoothed(s)) cell_sums(s, t.cell_volume, t.cell_pressure, excess);
   s.bins.scatter([&](std::size_t p) {
     if (!t.saturated(P, p)) return;

@@ -73,6 +73,10 @@ struct TwoPhase {
   double permeability(std::size_t body, double n) const;
   /// The hydrostatic pore pressure p_h at height z (Pa; negative above the water table).
   double hydrostatic_pressure(double z_m) const;
+  /// A particle's excess pore pressure p_e = p − p_h(z_p) (Pa).
+  double excess_pressure(const Particles& P, std::size_t p) const {
+    return pore_pressure[p] - hydrostatic_pressure(P.z[p]);
+  }
 };
 
 /// The two-phase state of a model whose bodies have been seeded into `particles`:

@@ -162,6 +162,12 @@ std::vector<Probe> branch_probes(std::string_view kind) {
           "boundaries.inner=free", "output.probes=[]", "bodies.0.region.r_min_m=0.01", "bodies.0.region.r_max_m=0.03",
           "solver.dt_s=1e-5", "output.field_interval_s=null", "output.field_times_s=[0.01]",
           R"(surface_pressures=[{"side": "outer", "pressure_kPa": 1, "z_min_m": 0, "z_max_m": 0.5}])"}}};
+    // A saturated body off the axis: the inner side's drainage, and Kozeny–Carman.
+    probes.push_back(
+        {"mpm_terzaghi_column",
+         {"mesh.r_min_m=0.05", "mesh.r_max_m=0.15", "bodies.0.region.r_min_m=0.05", "bodies.0.region.r_max_m=0.15",
+          "boundaries.axis=null", "boundaries.inner=roller", "boundaries.drainage.inner=drained",
+          "bodies.0.permeability_law=kozeny_carman", "output.probes=[]"}});
     for (Probe p : material_probes("mpm_geostatic_column", "bodies.0.material.")) {
       p.overrides.insert(p.overrides.begin(), ssmc.begin(), ssmc.end());
       probes.push_back(p);

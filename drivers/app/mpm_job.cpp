@@ -69,6 +69,20 @@ HistoryQuantity resolve_quantity(const std::string& q, const std::vector<std::st
   return {diagnostic_named(q), std::nullopt};
 }
 
+/// A saturated model's particle fields besides the effective stress: the pore pressure p (gauge),
+/// its excess over hydrostatic (kPa) and the porosity. None for a dry model.
+std::vector<std::pair<std::string, std::vector<double>>> pore_fluid_fields(const mpm::Simulation& s) {
+  if (!s.two_phase) return {};
+  const mpm::TwoPhase& t = *s.two_phase;
+  const std::size_t n = s.particles.size();
+  std::vector<double> pressure(n), excess(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    pressure[p] = 1e-3 * t.pore_pressure[p];
+    excess[p] = 1e-3 * t.excess_pressure(s.particles, p);
+  }
+  return {{"pore_pressure_kPa", pressure}, {"excess_pore_pressure_kPa", excess}, {"porosity", t.porosity}};
+}
+
 class MpmJob : public Job {
  public:
   MpmJob(MpmScene scene, std::string name)
@@ -89,7 +103,13 @@ class MpmJob : public Job {
         << " m; particles: " << s.particles.size() << "\n";
     describe_memory(out, size);
     out << "stages: " << s.stages.describe() << "\n";
-    out << "CFL time step limit h_min/(c_p + |v|max): " << format_seconds(s.dt_limit_s) << "\n";
+    if (s.two_phase) {
+      out << "CFL time step limit h_min/(c_p + |v|max): " << format_seconds(mpm::cfl_time_step_limit(s)) << "\n";
+      out << "two-phase time step limit (Mieremet 2015, L = h_min): "
+          << format_seconds(mpm::two_phase_time_step_limit(s)) << "\n";
+    } else {
+      out << "CFL time step limit h_min/(c_p + |v|max): " << format_seconds(s.dt_limit_s) << "\n";
+    }
     out << "time step: " << format_seconds(s.dt_s)
         << (s.settings.fixed_dt_s ? " (fixed)"
                                   : " (Courant " + std::to_string(s.settings.courant) + ", recomputed every step)")
@@ -138,10 +158,13 @@ class MpmJob : public Job {
 std::vector<std::string> MpmJob::columns() const {
   std::vector<std::string> c = {"time_s"};
   c.insert(c.end(), scene_.output.history.begin(), scene_.output.history.end());
-  for (const MpmProbe& p : scene_.output.probes)
+  for (const MpmProbe& p : scene_.output.probes) {
     for (const char* q :
          {"r_m", "z_m", "v_r_m_s", "v_z_m_s", "sigma_rr_kPa", "sigma_zz_kPa", "sigma_tt_kPa", "sigma_rz_kPa"})
       c.push_back(p.name + "_" + q);
+    if (simulation_->two_phase)  // σ above is the effective stress σ'; σ = σ' − p I
+      for (const char* q : {"pore_pressure_kPa", "excess_pore_pressure_kPa"}) c.push_back(p.name + "_" + q);
+  }
   return c;
 }
 
@@ -159,6 +182,8 @@ std::vector<double> MpmJob::row() const {
     const Voigt& sig = s.particles.stress[p];
     r.insert(r.end(), {s.particles.r[p], s.particles.z[p], s.particles.vr[p], s.particles.vz[p], 1e-3 * sig[0],
                        1e-3 * sig[1], 1e-3 * sig[2], 1e-3 * sig[3]});
+    if (s.two_phase)
+      r.insert(r.end(), {1e-3 * s.two_phase->pore_pressure[p], 1e-3 * s.two_phase->excess_pressure(s.particles, p)});
   }
   return r;
 }
@@ -180,7 +205,9 @@ void MpmJob::run(RunContext& context) {
     total.push_back(d.total_energy_J());
   };
   callbacks.write_fields = [&] {
-    fields.write(s.particles, s.time_s, {.stress_components = true, .extra = micropolar_columns(s.micropolar)});
+    std::vector<std::pair<std::string, std::vector<double>>> extra = micropolar_columns(s.micropolar);
+    for (auto& column : pore_fluid_fields(s)) extra.push_back(std::move(column));
+    fields.write(s.particles, s.time_s, {.stress_components = true, .extra = std::move(extra)});
   };
   const mpm::Diagnostics initial = mpm::measure(s);
   const MpmOutputTimes times{scene_.end_time_s, scene_.output.history_interval_s, scene_.output.field_times_s};
@@ -209,6 +236,7 @@ void MpmJob::run(RunContext& context) {
   sum["mass_kg"] = final_state.mass_kg;
   sum["wall_clamps"] = s.wall_clamps;
   sum["field_files"] = fields.size();
+  if (s.two_phase) sum["two_phase_dt_limit_s"] = mpm::two_phase_time_step_limit(s);
 }
 
 }  // namespace

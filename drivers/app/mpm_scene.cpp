@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "drivers/app/pore_fluid_scene.hpp"
 #include "drivers/scene/material_scene.hpp"
 #include "models/math_constants.hpp"
 
@@ -242,38 +243,64 @@ MpmScene read_mpm_scene(SceneReader& scene) {
     } else {
       b.allow("initial_stress", geostatic);
     }
+    body.saturated = read_saturation(b);
     b.finish("a body");
     out.body_names.push_back(body.name);
     model.bodies.push_back(std::move(body));
   }
+
+  const bool saturated =
+      std::ranges::any_of(model.bodies, [](const mpm::BodyDescription& d) { return d.saturated.has_value(); });
+  model.fluid = read_pore_fluid(scene, saturated);
 
   SceneReader bc = scene.object("boundaries", Doc("what holds each side of the grid"));
   model.boundaries.inner = read_fixity(bc, axis ? "axis" : "inner", mpm::Fixity::roller, axis);
   model.boundaries.outer = read_fixity(bc, "outer", mpm::Fixity::roller, false);
   model.boundaries.bottom = read_fixity(bc, "bottom", mpm::Fixity::fixed, false);
   model.boundaries.top = read_fixity(bc, "top", mpm::Fixity::free, false);
+  model.drainage = read_drainage(bc, model.boundaries, axis, saturated);
   bc.finish(axis ? "boundaries (axis, outer, bottom, top)" : "boundaries (inner, outer, bottom, top)");
 
   const Range band = Range::closed(model.z_nodes_m.front(), model.z_nodes_m.back(), "m");
-  std::vector<SceneReader> loads =
-      scene.objects("surface_pressures", 0, 16, Doc("pressures on bands of the inner or outer side"));
+  const Range ring = Range::closed(model.r_nodes_m.front(), model.r_nodes_m.back(), "m");
+  std::vector<SceneReader> loads = scene.objects(
+      "surface_pressures", 0, 16, Doc("pressures on bands of the inner or outer side, or on rings of the top"));
   for (SceneReader& l : loads) {
     mpm::SurfacePressure p;
-    p.side = l.choice("side", mpm::kSideNames, Doc("the loaded side (not inner on the symmetry axis)"));
+    p.side = l.choice("side", mpm::kSideNames,
+                      Doc("the loaded side (not inner on the symmetry axis); top: the grid's top line z = z_max"));
     if (p.side == mpm::Side::inner && axis)
       l.fail("side", "the inner side is the symmetry axis: it carries no pressure");
     const double pressure =
         1e3 * l.number("pressure_kPa", Range::closed(-1e9, 1e9, "kPa"), Doc("the pressure, compression positive"));
     const double ramp = l.number("ramp_time_s", Range::non_negative(kMaxTime_s, "s"), 0.0,
                                  Doc("the pressure rises from 0 along a half cosine over this time"));
-    p.z_min_m = l.number("z_min_m", band, Doc("bottom of the loaded band").within("inside the grid"));
-    p.z_max_m = l.number("z_max_m", band, Doc("top of the loaded band").within("inside the grid, > z_min_m"));
-    if (!(p.z_max_m > p.z_min_m)) l.fail("z_max_m", "must be greater than z_min_m");
+    if (p.side == mpm::Side::top) {
+      p.r_min_m = l.number("r_min_m", ring, model.r_nodes_m.front(),
+                           Doc("inner radius of the loaded ring")
+                               .by_default("the grid's first radial node")
+                               .within("inside the grid")
+                               .only_with("side top"));
+      p.r_max_m = l.number("r_max_m", ring, model.r_nodes_m.back(),
+                           Doc("outer radius of the loaded ring")
+                               .by_default("the grid's last radial node")
+                               .within("inside the grid, > r_min_m")
+                               .only_with("side top"));
+      if (!(p.r_max_m > p.r_min_m)) l.fail("r_max_m", "must be greater than r_min_m");
+    } else {
+      p.z_min_m = l.number("z_min_m", band,
+                           Doc("bottom of the loaded band").within("inside the grid").only_with("side inner or outer"));
+      p.z_max_m =
+          l.number("z_max_m", band,
+                   Doc("top of the loaded band").within("inside the grid, > z_min_m").only_with("side inner or outer"));
+      if (!(p.z_max_m > p.z_min_m)) l.fail("z_max_m", "must be greater than z_min_m");
+    }
     // A smooth (half-cosine) ramp excites the lowest modes the least.
     p.pressure_Pa = [pressure, ramp](double t) {
       return t >= ramp ? pressure : pressure * 0.5 * (1.0 - std::cos(kPi * t / ramp));
     };
-    l.finish("a surface pressure (side, pressure_kPa, ramp_time_s, z_min_m, z_max_m)");
+    l.finish(p.side == mpm::Side::top ? "a top pressure (side, pressure_kPa, ramp_time_s, r_min_m, r_max_m)"
+                                      : "a surface pressure (side, pressure_kPa, ramp_time_s, z_min_m, z_max_m)");
     model.pressures.push_back(std::move(p));
   }
 

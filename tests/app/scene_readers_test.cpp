@@ -202,8 +202,60 @@ TEST_CASE("mpm reader: the wave column and its bad keys", "[app][scene][mpm]") {
   CHECK(scene_error([] { mpm_scene("mpm_wave_column", {"solver.shape_function=3"}); }) ==
         "solver.shape_function: must be one of: linear, gimp; got a number");
   CHECK(scene_error([] { mpm_scene("mpm_wave_column", {"boundaries.inner=free"}); }) ==
-        "boundaries.inner: unknown key for boundaries (axis, outer, bottom, top); allowed keys: axis, bottom, outer, "
-        "top");
+        "boundaries.inner: unknown key for boundaries (axis, outer, bottom, top); allowed keys: axis, bottom, "
+        "drainage, outer, top");
+}
+
+TEST_CASE("mpm reader: the saturated Terzaghi column, and saturated keys where they do not belong",
+          "[app][scene][mpm][saturated]") {
+  const MpmScene s = mpm_scene("mpm_terzaghi_column");
+  REQUIRE(s.model.bodies.size() == 1);
+  REQUIRE(s.model.bodies[0].saturated);
+  CHECK(s.model.bodies[0].saturated->porosity == 0.4);
+  CHECK(s.model.bodies[0].saturated->permeability_m_s == 1e-3);
+  CHECK(s.model.bodies[0].saturated->permeability_law == mpm::PermeabilityLaw::constant);
+  CHECK(s.model.bodies[0].density_kg_m3 == 1600.0);  // the dry density
+  CHECK(s.model.fluid.bulk_modulus_Pa == 2.2e9);
+  CHECK(s.model.fluid.density_kg_m3 == 1000.0);
+  CHECK(s.model.drainage.bottom == mpm::Drainage::impermeable);
+  CHECK(s.model.drainage.top == mpm::Drainage::drained);
+  REQUIRE(s.model.pressures.size() == 1);
+  CHECK(s.model.pressures[0].side == mpm::Side::top);
+  CHECK(s.model.pressures[0].r_max_m == 0.1);
+  CHECK(mpm_scene("mpm_terzaghi_column", {"fluid=null"}).model.fluid.bulk_modulus_Pa == 2.2e9);  // water by default
+  CHECK(mpm_scene("mpm_terzaghi_column", {"bodies.0.permeability_law=kozeny_carman"})
+            .model.bodies[0]
+            .saturated->permeability_law == mpm::PermeabilityLaw::kozeny_carman);
+  CHECK(mpm_scene("mpm_terzaghi_column", {"boundaries.drainage.bottom=drained"}).model.drainage.bottom ==
+        mpm::Drainage::drained);
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"bodies.0.porosity=1"}); }) ==
+        "bodies[0].porosity: = 1 is out of range: must be > 0 and < 1");
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"bodies.0.permeability_m_s=0"}); }) ==
+        "bodies[0].permeability_m_s: = 0 is out of range: must be > 0 and ≤ 1 m/s");
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"bodies.0.porosity=null"}); }) ==
+        "bodies[0].porosity: is required (> 0 and < 1)");
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"fluid.bulk_modulus_kPa=0"}); }) ==
+        "fluid.bulk_modulus_kPa: = 0 is out of range: must be > 0 and ≤ 1e+08 kPa");
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"boundaries.drainage.top=impermeable"}); }) ==
+        "boundaries.drainage.top: is impermeable but boundaries.top is free: hold the solid there too (roller or "
+        "fixed), or make it drained");
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"boundaries.bottom=absorbing"}); }) ==
+        "boundaries.bottom: a saturated body takes no absorbing sides");
+  CHECK(scene_error([] {
+          mpm_scene("mpm_terzaghi_column", {"surface_pressures.0.z_min_m=0"});
+        }).rfind("surface_pressures[0].z_min_m: unknown key for a top pressure", 0) == 0);
+  // A dry scene carries none of them, and its echo gains none.
+  CHECK(scene_error([] { mpm_scene("mpm_terzaghi_column", {"bodies.0.saturated=false"}); }) ==
+        "bodies[0].porosity: only with saturated: true");
+  CHECK(scene_error([] { mpm_scene("mpm_wave_column", {R"(fluid={"density_kg_m3": 1000})"}); }) ==
+        "fluid: only with a saturated body (bodies[i].saturated: true)");
+  CHECK(scene_error([] { mpm_scene("mpm_wave_column", {R"(boundaries.drainage={"top": "drained"})"}); }) ==
+        "boundaries.drainage: only with a saturated body (bodies[i].saturated: true)");
+  ShippedScene dry("mpm_wave_column");
+  (void)read_mpm_scene(dry.reader());
+  CHECK_FALSE(dry.echo().contains("fluid"));
+  CHECK_FALSE(dry.echo()["bodies"][0].contains("saturated"));
+  CHECK_FALSE(dry.echo()["boundaries"].contains("drainage"));
 }
 
 TEST_CASE("ffp reader: the reference drop and its bad keys", "[app][scene][ffp]") {
