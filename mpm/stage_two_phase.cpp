@@ -221,9 +221,11 @@ void compute_liquid_strain(Simulation& s) {
 
 // Storage (Verruijt; Anura3D's StressSolid): with strain smoothing the liquid's Δε_v,w takes its
 // cell mean Σ V Δε_v,w / Σ V as the solid's Δε_v,s already has (smooth_volumetric_strain), then
-//   Δp = −(K_w/n) [(1 − n) Δε_v,s + n Δε_v,w]    (tension-positive strains, compression-positive p)
-//   p ← max(p + Δp, −(p_atm − p_vap))             (the fluid cavitates at its vapour pressure)
-//   n ← 1 − m_s/(ρ_s V)                           (the solid's mass is kept; grains incompressible)
+//   p* ← p* − (K_w/n) [(1 − n) Δε_v,s + n Δε_v,w]   (tension-positive strains, compression-positive p)
+//   p = max(p*, −(p_atm − p_vap))                   (the fluid cavitates at its vapour pressure; below
+//                                                     the floor p* keeps the vapour's volume, so that
+//                                                     a recompression condenses it first)
+//   n ← 1 − m_s/(ρ_s V)                              (the solid's mass is kept; grains incompressible)
 void update_pore_pressure(Simulation& s) {
   TwoPhase& t = *s.two_phase;
   const Particles& P = s.particles;
@@ -236,7 +238,8 @@ void update_pore_pressure(Simulation& s) {
     const double n = t.porosity[p];
     const double solid = trace(s.strain_increment[p]);
     const double liquid = cell_mean_or_own(s, p, t.cell_strain_volume, t.cell_liquid_strain, limit, t.liquid_strain[p]);
-    t.pore_pressure[p] = std::max(t.pore_pressure[p] - K / n * ((1.0 - n) * solid + n * liquid), floor);
+    t.liquid_pressure[p] -= K / n * ((1.0 - n) * solid + n * liquid);
+    t.pore_pressure[p] = std::max(t.liquid_pressure[p], floor);
     t.porosity[p] = 1.0 - P.mass[p] / (t.bodies[P.body[p]].grain_density_kg_m3 * P.volume[p]);
   }
 }

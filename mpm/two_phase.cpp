@@ -90,6 +90,7 @@ TwoPhase make_two_phase(const ModelDescription& model, const Grid& grid, const P
   t.liquid_vr.assign(n, 0.0);
   t.liquid_vz.assign(n, 0.0);
   t.pore_pressure.assign(n, 0.0);
+  t.liquid_pressure.assign(n, 0.0);
   t.liquid_strain.assign(n, 0.0);
   for (std::size_t p = 0; p < n; ++p) {
     const std::size_t b = particles.body[p];
@@ -97,7 +98,7 @@ TwoPhase make_two_phase(const ModelDescription& model, const Grid& grid, const P
     t.porosity[p] = t.bodies[b].initial_porosity;
     t.liquid_vr[p] = model.bodies[b].initial_velocity_r_m_s;
     t.liquid_vz[p] = model.bodies[b].initial_velocity_z_m_s;
-    t.pore_pressure[p] = t.hydrostatic_pressure(particles.z[p]);
+    t.set_pore_pressure(p, t.hydrostatic_pressure(particles.z[p]));
   }
   t.liquid.resize(grid.nodes());
   t.porous_mass.assign(grid.nodes(), 0.0);

@@ -19,7 +19,7 @@
 ///   mixture:  M_s a_s + M̄_w a_w = f^int(σ') + f_e + (M_s + M̄_w − M_w) g + f^ext
 ///   M_w = Σ_p S_ip ρ_w V_p,  M̄_w = Σ_p S_ip n_p ρ_w V_p,  Q = Σ_p S_ip n_p ρ_w g V_p / k_p,
 ///   f_e = Σ_p V_p p_e,p (G_ip + S_ip/r_p e_r)   (the internal force of −p_e I)
-///   storage:  Δp = −(K_w/n) [(1 − n) Δε_v,s + n Δε_v,w]
+///   storage:  Δp* = −(K_w/n) [(1 − n) Δε_v,s + n Δε_v,w],  p = max(p*, −(p_atm − p_vap))
 ///   porosity: n = 1 − m_s/(ρ_s V)   (incompressible grains)
 #include <cstddef>
 #include <optional>
@@ -54,7 +54,11 @@ struct TwoPhase {
   std::vector<double> porosity;
   std::vector<double> liquid_vr, liquid_vz;  ///< the liquid's velocity v_w (m/s)
   std::vector<double> pore_pressure;         ///< p (Pa, gauge, compression positive), hydrostatic included
-  std::vector<double> liquid_strain;         ///< Δε_v,w = Δt ∇·v_w of this step
+  /// The pressure the storage equation gives the liquid, p* (Pa); p = max(p*, p_cavitation).
+  /// Below the floor, (p_cavitation − p*) n/K_w is the vapour's volume per unit volume: a
+  /// recompression condenses it before the pressure rises again.
+  std::vector<double> liquid_pressure;
+  std::vector<double> liquid_strain;  ///< Δε_v,w = Δt ∇·v_w of this step
 
   /// The liquid's nodes: mass = M_w, momentum Σ S ρ_w V v_w, internal force f_e;
   /// velocities as a NodalField's (its external force stays zero).
@@ -73,6 +77,8 @@ struct TwoPhase {
   double permeability(std::size_t body, double n) const;
   /// The hydrostatic pore pressure p_h at height z (Pa; negative above the water table).
   double hydrostatic_pressure(double z_m) const;
+  /// Sets a particle's pore pressure (and its liquid's, which then holds no vapour).
+  void set_pore_pressure(std::size_t p, double value) { pore_pressure[p] = liquid_pressure[p] = value; }
   /// A particle's excess pore pressure p_e = p − p_h(z_p) (Pa).
   double excess_pressure(const Particles& P, std::size_t p) const {
     return pore_pressure[p] - hydrostatic_pressure(P.z[p]);

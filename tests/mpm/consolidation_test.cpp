@@ -64,7 +64,7 @@ Errors consolidate(testing::SaturatedColumn c, const std::vector<double>& time_f
   const double p0 = c.undrained_share() * load, effective = -(1.0 - c.undrained_share()) * load;
   const double k0 = c.poisson_ratio / (1.0 - c.poisson_ratio);
   for (std::size_t p = 0; p < s.particles.size(); ++p) {
-    s.two_phase->pore_pressure[p] = p0;
+    s.two_phase->set_pore_pressure(p, p0);
     s.particles.stress[p] << k0 * effective, effective, k0 * effective, 0.0, 0.0, 0.0;
   }
   const double H = c.height_m, cv = c.consolidation_coefficient_m2_s();
