@@ -12,8 +12,6 @@ namespace ffp::mpm {
 
 namespace {
 
-bool linear(const Simulation& s) { return s.settings.shape_function == ShapeFunction::linear; }
-
 /// fn(p, group) for every particle of a micropolar body, each on one thread.
 template <class Fn>
 void for_micropolar_particles(const Simulation& s, Fn&& fn) {
@@ -122,7 +120,7 @@ void micropolar_stresses(Simulation& s) {
 void map_micropolar_to_grid(Simulation& s) {
   MicropolarFields& f = s.micropolar;
   for (auto* a : {&f.rotational_mass, &f.angular_momentum, &f.couple_force}) std::fill(a->begin(), a->end(), 0.0);
-  if (linear(s)) {
+  if (uses_linear_hats(s)) {
     scatter_micropolar<2>(s);
   } else {
     scatter_micropolar<3>(s);
@@ -153,7 +151,7 @@ void integrate_micro_rotation(Simulation& s) {
 
 // ω̇_p ← α (ω̇_p + Σ_i S_ip (ω̇_i^{n+1} − ω̇_i^n)) + (1 − α) Σ_i S_ip ω̇_i^{n+1}   (as v_p, update_particles).
 void update_particle_micro_rotation(Simulation& s) {
-  if (linear(s)) {
+  if (uses_linear_hats(s)) {
     blend_rotation_rates<2>(s);
   } else {
     blend_rotation_rates<3>(s);
@@ -165,7 +163,7 @@ void update_particle_micro_rotation(Simulation& s) {
 void map_micro_spin_to_grid(Simulation& s) {
   MicropolarFields& f = s.micropolar;
   std::fill(f.angular_momentum.begin(), f.angular_momentum.end(), 0.0);
-  if (linear(s)) {
+  if (uses_linear_hats(s)) {
     scatter_angular_momentum<2>(s);
   } else {
     scatter_angular_momentum<3>(s);
@@ -178,7 +176,7 @@ void map_micro_spin_to_grid(Simulation& s) {
 // ω̇_i: USL the grid update's ω̇^{n+1}, MUSL the remapped one. A particle that has lost grain
 // contact (below its group's disconnection density) carries no skew or couple stress.
 void update_micropolar_stresses(Simulation& s) {
-  if (linear(s)) {
+  if (uses_linear_hats(s)) {
     micropolar_stresses<2>(s);
   } else {
     micropolar_stresses<3>(s);

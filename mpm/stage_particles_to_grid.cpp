@@ -298,8 +298,6 @@ void scatter_momentum(Simulation& s) {
   });
 }
 
-bool linear(const Simulation& s) { return s.settings.shape_function == ShapeFunction::linear; }
-
 }  // namespace
 
 void reset_grid(Simulation& s) {
@@ -312,12 +310,12 @@ void reset_grid(Simulation& s) {
 void map_particles_to_grid(Simulation& s) {
   s.internal_forces_mapped = forces_fuse_with_mapping(s);
   if (s.internal_forces_mapped) {
-    if (linear(s)) {
+    if (uses_linear_hats(s)) {
       scatter_mass_momentum_forces<2>(s);
     } else {
       scatter_mass_momentum_forces<3>(s);
     }
-  } else if (linear(s)) {
+  } else if (uses_linear_hats(s)) {
     scatter_mass_momentum<2>(s);
   } else {
     scatter_mass_momentum<3>(s);
@@ -332,7 +330,7 @@ void compute_internal_forces(Simulation& s) {
     s.internal_forces_mapped = false;
     return;
   }
-  if (linear(s)) {
+  if (uses_linear_hats(s)) {
     scatter_internal_forces<2>(s);
   } else {
     scatter_internal_forces<3>(s);
@@ -348,7 +346,7 @@ void map_velocities_to_grid(Simulation& s) {
       std::fill(f.momentum_r.begin(), f.momentum_r.end(), 0.0);
       std::fill(f.momentum_z.begin(), f.momentum_z.end(), 0.0);
     }
-    if (linear(s)) {
+    if (uses_linear_hats(s)) {
       scatter_momentum<2>(s);
     } else {
       scatter_momentum<3>(s);

@@ -24,6 +24,9 @@ inline bool takes_part_in_cell_means(const Particles& P, std::size_t p, const st
   return P.mass[p] > limit[P.body[p]] * P.volume[p];
 }
 
+/// Whether the step uses linear hats (two nodes per direction) rather than GIMP (three).
+inline bool uses_linear_hats(const Simulation& s) { return s.settings.shape_function == ShapeFunction::linear; }
+
 void reset_grid(Simulation& s);               ///< zero mass, momentum and forces of every field
 void compute_shape_functions(Simulation& s);  ///< S_ip, G_ip at start-of-step positions; strip bins
 void map_particles_to_grid(Simulation& s);    ///< m_i, p_i
