@@ -31,9 +31,10 @@ std::vector<std::uint32_t> rotation_fixed_nodes(const Grid& grid) {
     if (c.bits == (constrain_r | constrain_z)) fixed.push_back(c.node);
   if (grid.has_axis())
     for (int j = 0; j < grid.z.nodes(); ++j) fixed.push_back(static_cast<std::uint32_t>(grid.node(0, j)));
-  std::ranges::sort(fixed);
-  const auto [first, last] = std::ranges::unique(fixed);
-  fixed.erase(first, last);
+  // std::unique rather than std::ranges::unique: clang 14 with libstdc++ 12 cannot form the
+  // latter's subrange (the fuzz build compiles with clang).
+  std::sort(fixed.begin(), fixed.end());
+  fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   return fixed;
 }
 
