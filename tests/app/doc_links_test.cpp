@@ -15,28 +15,11 @@
 #include <catch2/catch.hpp>
 
 #include "tests/support/scratch.hpp"
+#include "tests/support/tracked_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<std::string> tracked_markdown(const fs::path& root) {
-  std::vector<std::string> files;
-  if (!fs::exists(root / ".git")) return files;
-  const std::string command = "git -C '" + root.string() + "' ls-files -z '*.md' 2>/dev/null";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) return files;
-  std::string name;
-  for (int c; (c = std::fgetc(pipe.get())) != EOF;) {
-    if (c != '\0') {
-      name.push_back(static_cast<char>(c));
-    } else {
-      files.push_back(name);
-      name.clear();
-    }
-  }
-  return files;
-}
 
 /// GitHub's anchor of a heading: lower case, spaces to hyphens, punctuation dropped
 /// (letters beyond ASCII kept as they are).
@@ -71,7 +54,7 @@ std::set<std::string> anchors_of(const std::string& text) {
 
 TEST_CASE("the manual's relative links name files and sections that exist", "[app][docs]") {
   const fs::path root = FFP_SOURCE_DIR;
-  const std::vector<std::string> files = tracked_markdown(root);
+  const std::vector<std::string> files = ffp::test_support::tracked_files(root, "*.md");
   if (files.empty()) {
     WARN("not a git checkout (no git ls-files at " << root.string() << "): nothing to check");
     return;

@@ -12,6 +12,7 @@
 
 #include "reports/process_words.hpp"
 #include "tests/support/scratch.hpp"
+#include "tests/support/tracked_files.hpp"
 
 namespace fs = std::filesystem;
 using ffp::find_process_words;
@@ -24,25 +25,6 @@ const std::string kIssue = std::string("iss") + "ue", kStop = std::string("st") 
                   kHour = std::string("ho") + "ur";
 
 std::size_t matches(const std::string& text) { return find_process_words(text).size(); }
-
-/// `git ls-files` of the source tree, or empty when it is not a git checkout.
-std::vector<std::string> tracked_files(const fs::path& root) {
-  std::vector<std::string> files;
-  if (!fs::exists(root / ".git")) return files;
-  const std::string command = "git -C '" + root.string() + "' ls-files -z 2>/dev/null";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) return files;
-  std::string name;
-  for (int c; (c = std::fgetc(pipe.get())) != EOF;) {
-    if (c != '\0') {
-      name.push_back(static_cast<char>(c));
-    } else {
-      files.push_back(name);
-      name.clear();
-    }
-  }
-  return files;
-}
 
 /// Text a reader meets: not a binary file, not a numeric data table (lab curves, records,
 /// fuzz seeds), whose words are columns of numbers.
@@ -79,7 +61,7 @@ TEST_CASE("work-process words: numbered references and the host's hours match, o
 
 TEST_CASE("no tracked file speaks of how the work was organised", "[app][words]") {
   const fs::path root = FFP_SOURCE_DIR;
-  const std::vector<std::string> files = tracked_files(root);
+  const std::vector<std::string> files = ffp::test_support::tracked_files(root);
   if (files.empty()) {
     WARN("not a git checkout (no git ls-files at " << root.string() << "): nothing to scan");
     return;

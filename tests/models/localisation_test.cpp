@@ -1,6 +1,8 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <tuple>
+#include <utility>
 
 #include <catch2/catch.hpp>
 
@@ -55,27 +57,41 @@ CoaxialBand coaxial_band(double b1, double b3, double a1, double a3, double nu) 
   return {x, f};
 }
 
+/// The isotropic elastic tensor D_ijkl = λ δij δkl + G (δik δjl + δil δjk), written out.
+double isotropic_stiffness(const ElasticConstants& elastic, int i, int j, int k, int l) {
+  auto delta = [](int a, int b) { return a == b ? 1.0 : 0.0; };
+  return elastic.lame_lambda() * delta(i, j) * delta(k, l) +
+         elastic.shear_modulus() * (delta(i, k) * delta(j, l) + delta(i, l) * delta(j, k));
+}
+
+/// D:m and n_f:D, contracted index by index (independent of the Voigt algebra under test).
+std::pair<Eigen::Matrix3d, Eigen::Matrix3d> stiffness_contractions(const ElasticConstants& elastic,
+                                                                   const Eigen::Matrix3d& nf,
+                                                                   const Eigen::Matrix3d& m) {
+  Eigen::Matrix3d dm = Eigen::Matrix3d::Zero(), nd = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          const double d = isotropic_stiffness(elastic, i, j, k, l);
+          dm(i, j) += d * m(k, l), nd(k, l) += nf(i, j) * d;
+        }
+  return {dm, nd};
+}
+
 }  // namespace
 
 TEST_CASE("the acoustic tensor is n·D^ep·n of the explicit fourth-order tangent", "[localisation]") {
   std::mt19937_64 rng(7);
   const ElasticConstants elastic = elastic_with(0.3);
-  const double lambda = elastic.lame_lambda(), g = elastic.shear_modulus();
-  auto delta = [](int i, int j) { return i == j ? 1.0 : 0.0; };
+  const double g = elastic.shear_modulus();
   for (int trial = 0; trial < 5; ++trial) {
     PlasticFlow flow{random_voigt(rng, 1.0), random_voigt(rng, 1.0), 0.0};
     const Voigt dm = ElasticStiffness::of(elastic).stress_increment(flow.flow_direction);
     // A hardening that keeps χ = n_f:D:m + H = G whatever the random tensors give.
     flow.hardening_modulus_Pa = g - contract(flow.yield_normal, dm);
     const Eigen::Matrix3d nf = to_matrix(flow.yield_normal), m = to_matrix(flow.flow_direction);
-    auto d = [&](int i, int j, int k, int l) {  // D_ijkl = λ δij δkl + G (δik δjl + δil δjk)
-      return lambda * delta(i, j) * delta(k, l) + g * (delta(i, k) * delta(j, l) + delta(i, l) * delta(j, k));
-    };
-    Eigen::Matrix3d a = Eigen::Matrix3d::Zero(), b = Eigen::Matrix3d::Zero();  // D:m, n_f:D
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k)
-          for (int l = 0; l < 3; ++l) a(i, j) += d(i, j, k, l) * m(k, l), b(k, l) += nf(i, j) * d(i, j, k, l);
+    const auto [a, b] = stiffness_contractions(elastic, nf, m);  // D:m, n_f:D
     const double chi = (nf.cwiseProduct(a)).sum() + flow.hardening_modulus_Pa;
     std::normal_distribution<double> normal;
     const Eigen::Vector3d n = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
@@ -83,7 +99,8 @@ TEST_CASE("the acoustic tensor is n·D^ep·n of the explicit fourth-order tangen
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         for (int k = 0; k < 3; ++k)
-          for (int l = 0; l < 3; ++l) expected(j, k) += n[i] * (d(i, j, k, l) - a(i, j) * b(k, l) / chi) * n[l];
+          for (int l = 0; l < 3; ++l)
+            expected(j, k) += n[i] * (isotropic_stiffness(elastic, i, j, k, l) - a(i, j) * b(k, l) / chi) * n[l];
     const Eigen::Matrix3d computed = acoustic_tensor(elastic, &flow, n);
     CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
     // The ratio the search minimises (by the determinant lemma) is det A / det A^e of this tensor.
@@ -327,22 +344,13 @@ PlasticCorner random_corner(std::mt19937_64& rng, const ElasticConstants& elasti
 TEST_CASE("the corner's acoustic tensor is n·D^ep·n of Koiter's explicit fourth-order tangent", "[localisation]") {
   std::mt19937_64 rng(17);
   const ElasticConstants elastic = elastic_with(0.27);
-  const double lambda = elastic.lame_lambda(), g = elastic.shear_modulus();
-  auto delta = [](int i, int j) { return i == j ? 1.0 : 0.0; };
-  auto d = [&](int i, int j, int k, int l) {  // D_ijkl = λ δij δkl + G (δik δjl + δil δjk)
-    return lambda * delta(i, j) * delta(k, l) + g * (delta(i, k) * delta(j, l) + delta(i, l) * delta(j, k));
-  };
+  const double g = elastic.shear_modulus();
   for (int trial = 0; trial < 5; ++trial) {
     const PlasticCorner corner = random_corner(rng, elastic);
     std::array<Eigen::Matrix3d, 2> a, b;  // D:m_a, n_a:D
-    for (int k = 0; k < 2; ++k) {
-      a[k].setZero(), b[k].setZero();
-      const Eigen::Matrix3d nf = to_matrix(corner.yield_normals[k]), m = to_matrix(corner.flow_directions[k]);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int p = 0; p < 3; ++p)
-            for (int q = 0; q < 3; ++q) a[k](i, j) += d(i, j, p, q) * m(p, q), b[k](p, q) += nf(i, j) * d(i, j, p, q);
-    }
+    for (int k = 0; k < 2; ++k)
+      std::tie(a[k], b[k]) =
+          stiffness_contractions(elastic, to_matrix(corner.yield_normals[k]), to_matrix(corner.flow_directions[k]));
     Eigen::Matrix2d stiffness;  // G_ab = n_a:D:m_b + H_ab
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j)
@@ -356,7 +364,7 @@ TEST_CASE("the corner's acoustic tensor is n·D^ep·n of Koiter's explicit fourt
       for (int j = 0; j < 3; ++j)
         for (int k = 0; k < 3; ++k)
           for (int l = 0; l < 3; ++l) {
-            double tangent = d(i, j, k, l);  // D^ep = D − Σ_ab (D:m_a)(G⁻¹)_ab (n_b:D)
+            double tangent = isotropic_stiffness(elastic, i, j, k, l);  // D^ep = D − Σ_ab (D:m_a)(G⁻¹)_ab (n_b:D)
             for (int p = 0; p < 2; ++p)
               for (int q = 0; q < 2; ++q) tangent -= a[p](i, j) * inverse(p, q) * b[q](k, l);
             expected(j, k) += n[i] * tangent * n[l];
