@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "models/consolidation_solutions.hpp"
 #include "mpm/simulation.hpp"
 #include "saturated_column.hpp"
 
@@ -15,31 +16,6 @@ using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
-
-/// Terzaghi (1923): with depth ζ from the drained top, T = c_v t/H², M = π(2m + 1)/2,
-///   p(ζ, t) = Σ (2 p_0/M) sin(Mζ/H) e^{−M²T},
-/// and the downward displacement of the point at depth ζ (the compression of what lies
-/// below it, Δσ' = p_0 − p over E_c):
-///   w(ζ, t) = (p_0/E_c) [(H − ζ) − Σ (2H/M²) cos(Mζ/H) e^{−M²T}].
-struct Terzaghi {
-  double p0, H, cv, Ec;
-  double pressure(double depth, double t) const {
-    double sum = 0.0;
-    for (int m = 0; m < 2000; ++m) {
-      const double M = kPi * (2 * m + 1) / 2;
-      sum += 2.0 * p0 / M * std::sin(M * depth / H) * std::exp(-M * M * cv * t / (H * H));
-    }
-    return sum;
-  }
-  double displacement(double depth, double t) const {
-    double sum = 0.0;
-    for (int m = 0; m < 2000; ++m) {
-      const double M = kPi * (2 * m + 1) / 2;
-      sum += 2.0 * H / (M * M) * std::cos(M * depth / H) * std::exp(-M * M * cv * t / (H * H));
-    }
-    return p0 / Ec * ((H - depth) - sum);
-  }
-};
 
 struct Errors {
   std::vector<double> pressure;    ///< per time factor: max over cell rows |p − p_exact|/p_0

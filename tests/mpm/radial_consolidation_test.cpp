@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "models/consolidation_solutions.hpp"
 #include "mpm/simulation.hpp"
 #include "saturated_column.hpp"
 
@@ -15,44 +16,6 @@ using namespace ffp;
 using namespace ffp::mpm;
 
 namespace {
-
-/// The zeros of J_0, by Newton from McMahon's (m − 1/4)π (J_0' = −J_1).
-std::vector<double> bessel_j0_zeros(int count) {
-  std::vector<double> zeros;
-  for (int m = 1; m <= count; ++m) {
-    double x = (m - 0.25) * kPi;
-    for (int k = 0; k < 50; ++k) x += std::cyl_bessel_j(0.0, x) / std::cyl_bessel_j(1.0, x);
-    zeros.push_back(x);
-  }
-  return zeros;
-}
-
-/// ∂p/∂t = c (∂²p/∂r² + (1/r) ∂p/∂r) in 0 ≤ r ≤ R, p(R) = 0, p(r, 0) = p_0 (Crank 1975, ch. 5,
-/// the long cylinder with its surface held at zero):
-///   p = 2 p_0 Σ J_0(α_m r/R)/(α_m J_1(α_m)) e^{−α_m² c t/R²}.
-struct RadialDiffusion {
-  double p0, R, c;
-  std::vector<double> alpha = bessel_j0_zeros(300);
-  double pressure(double r, double t) const {
-    double sum = 0.0;
-    for (const double a : alpha)
-      sum += std::cyl_bessel_j(0.0, a * r / R) / (a * std::cyl_bessel_j(1.0, a)) * std::exp(-a * a * c * t / (R * R));
-    return 2.0 * p0 * sum;
-  }
-  /// Its mean over a cell column, weighted by r (the particles' volumes): Gauss–Legendre, 5 points.
-  double cell_mean(double r0, double r1, double t) const {
-    static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-    static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                                0.2369268850561891};
-    double sum = 0.0, weight = 0.0;
-    for (int k = 0; k < 5; ++k) {
-      const double r = 0.5 * (r0 + r1) + 0.5 * (r1 - r0) * x[k];
-      sum += w[k] * r * pressure(r, t);
-      weight += w[k] * r;
-    }
-    return sum / weight;
-  }
-};
 
 const std::vector<double> kTimeFactors = {0.02, 0.05, 0.1, 0.2};
 
@@ -77,7 +40,7 @@ std::vector<double> consolidate(int cells, long& steps) {
                                   (c.porosity * c.fluid_density_kg_m3() * kConductivityGravity_m_s2)};
   std::vector<double> errors;
   for (const double T : kTimeFactors) {
-    while (s.time_s < T * R * R / exact.c) s.advance();
+    while (s.time_s < T * R * R / exact.diffusivity_m2_s) s.advance();
     std::vector<double> sum(static_cast<std::size_t>(cells), 0.0), count(static_cast<std::size_t>(cells), 0.0);
     for (std::size_t p = 0; p < s.particles.size(); ++p) {
       const auto column = static_cast<std::size_t>(s.grid.r.cell_of(s.particles.r0[p]));

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "models/consolidation_solutions.hpp"
 #include "models/math_constants.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm_test_support.hpp"
@@ -35,13 +36,12 @@ struct SaturatedColumn {
   double saturated_density_kg_m3() const { return dry_density_kg_m3 + porosity * fluid_density_kg_m3(); }
   /// The undrained share of a 1D load the pore fluid takes: (K_w/n)/(E_c + K_w/n).
   double undrained_share() const {
-    const double fluid = fluid_bulk_modulus_Pa / porosity;
-    return fluid / (constrained_modulus_Pa + fluid);
+    return ::ffp::undrained_share(constrained_modulus_Pa, fluid_bulk_modulus_Pa, porosity);
   }
   /// Terzaghi's coefficient of consolidation with a compressible fluid, c_v = k/(γ_w (1/E_c + n/K_w)).
   double consolidation_coefficient_m2_s() const {
-    return permeability_m_s / (fluid_density_kg_m3() * kConductivityGravity_m_s2 *
-                               (1.0 / constrained_modulus_Pa + porosity / fluid_bulk_modulus_Pa));
+    return ::ffp::consolidation_coefficient(permeability_m_s, fluid_density_kg_m3(), constrained_modulus_Pa, porosity,
+                                            fluid_bulk_modulus_Pa, kConductivityGravity_m_s2);
   }
 
   ModelDescription model() const {
