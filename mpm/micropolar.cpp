@@ -12,6 +12,13 @@ namespace ffp::mpm {
 
 namespace {
 
+/// The friction angle the micro terms slip at: MC's φ', SSMC's residual φ'_r; an elastic law has none.
+double law_friction_rad(const MaterialLaw& law) {
+  if (const auto* mc = std::get_if<MohrCoulomb>(&law)) return mc->parameters().friction_angle_rad;
+  if (const auto* ss = std::get_if<StrainSofteningMohrCoulomb>(&law)) return ss->parameters().friction_residual_rad;
+  throw std::invalid_argument("micropolar friction_limited needs a frictional law (mc or ssmc)");
+}
+
 MicropolarGroup group_constants(const BodyDescription& body, std::size_t group) {
   const MicropolarParameters& m = *body.micropolar;
   if (!(m.length_m >= 0.0 && std::isfinite(m.length_m)))
@@ -21,7 +28,8 @@ MicropolarGroup group_constants(const BodyDescription& body, std::size_t group) 
   if (!(m.micro_inertia_m2 > 0.0 && std::isfinite(m.micro_inertia_m2)))
     throw std::invalid_argument("body " + body.name + ": the micro-inertia must be > 0");
   const double G = elastic_constants(body.law).shear_modulus();
-  return {group, m.cosserat_shear_modulus(G), m.couple_modulus(G), m.micro_inertia_m2};
+  return {group, m.cosserat_shear_modulus(G), m.couple_modulus(G), m.micro_inertia_m2, m.length_m,
+          m.friction_limited ? std::tan(law_friction_rad(body.law)) : 0.0};
 }
 
 /// The axis, and every node whose velocity is fixed in both directions (docs/theory.md#micropolar).

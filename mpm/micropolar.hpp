@@ -27,6 +27,10 @@ struct MicropolarGroup {
   double cosserat_shear_modulus = 0.0;  ///< G_c (Pa)
   double couple_modulus = 0.0;          ///< 2 G ℓ² (N)
   double micro_inertia_m2 = 0.0;        ///< j
+  double length_m = 0.0;                ///< ℓ
+  /// tan φ' of the law when the micro terms slip at its friction (MicropolarParameters::friction_limited;
+  /// SSMC: the residual φ'_r, what flowing grains keep), else 0: elastic.
+  double slip_friction = 0.0;
 
   /// What the micro terms add to M + |σ| in the CFL step's c² = (…)/ρ, on cells of h_min
   /// (docs/theory.md#micropolar-time-step): G_c + (3 G ℓ² + h² G_c)/j.

@@ -81,6 +81,18 @@ void blend_rotation_rates(Simulation& s) {
   });
 }
 
+/// The micro terms' slip at the sand's friction (models/micropolar.hpp), at the mean pressure of
+/// the step's start.
+void slip_at_friction(MicropolarFields& f, std::size_t p, const MicropolarGroup& g, const Voigt& stress) {
+  const double pressure = -(stress[0] + stress[1] + stress[2]) / 3.0;
+  const MicroStresses held = held_at_friction({f.skew_stress[p], f.couple_r[p], f.couple_z[p], f.couple_hoop[p]},
+                                              g.slip_friction, g.length_m, pressure);
+  f.skew_stress[p] = held.skew;
+  f.couple_r[p] = held.couple_r;
+  f.couple_z[p] = held.couple_z;
+  f.couple_hoop[p] = held.couple_hoop;
+}
+
 template <int S>
 void micropolar_stresses(Simulation& s) {
   MicropolarFields& f = s.micropolar;
@@ -108,6 +120,7 @@ void micropolar_stresses(Simulation& s) {
     f.couple_r[p] = m_r + macro_turn * m_z + g.couple_modulus * dt * rate_r;
     f.couple_z[p] = m_z - macro_turn * m_r + g.couple_modulus * dt * rate_z;
     f.couple_hoop[p] -= g.couple_modulus * turn * w.inverse_r;
+    if (g.slip_friction > 0.0) slip_at_friction(f, p, g, P.stress[p]);
   });
 }
 

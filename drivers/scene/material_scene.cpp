@@ -54,7 +54,11 @@ std::optional<MicropolarParameters> read_micropolar(SceneReader& m, MicropolarRu
                                 Doc("j: the micro-rotation's inertia per unit mass (ρ j per unit volume); a sphere of "
                                     "diameter d has d²/10")
                                     .by_default("length_m²/10"));
-  r.finish("micropolar (length_m, cosserat_shear_ratio, micro_inertia_m2)");
+  p.friction_limited =
+      r.boolean("friction_limited", false,
+                Doc("whether the skew and couple stresses slip at the law's friction: |s| ≤ tan φ' p, |m| ≤ ℓ tan φ' p "
+                    "(p the mean pressure; rolling resistance, Iwashita & Oda 1998); false keeps them elastic"));
+  r.finish("micropolar (length_m, cosserat_shear_ratio, micro_inertia_m2, friction_limited)");
   return p;
 }
 
@@ -171,6 +175,7 @@ json material_json(const MaterialSpec& spec) {
     m["micropolar"] = {{"length_m", spec.micropolar->length_m},
                        {"cosserat_shear_ratio", spec.micropolar->cosserat_shear_ratio},
                        {"micro_inertia_m2", spec.micropolar->micro_inertia_m2}};
+  if (spec.micropolar && spec.micropolar->friction_limited) m["micropolar"]["friction_limited"] = true;
   if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.parameters)) {
     m["phi_peak_deg"] = mc->friction_angle_rad / kDegree;
     m["psi_peak_deg"] = mc->dilatancy_angle_rad / kDegree;
