@@ -1,5 +1,5 @@
 /// Localisation with a fixed width: a strain-softening sand sheared between the walls of a
-/// long hollow cylinder (tests/mpm/shear_band_cylinder.hpp) forms a shear band one cell wide
+/// long hollow cylinder (verification/shear_band_cylinder.hpp) forms a shear band one cell wide
 /// at every cell size as a classical continuum, and a band of a width set by ℓ, with a
 /// converging load–displacement curve, as a micropolar one
 /// (docs/verification.md#localisation-with-a-fixed-width).
@@ -16,50 +16,16 @@
 #include <vector>
 
 #include "models/math_constants.hpp"
-#include "shear_band_cylinder.hpp"
+#include "verification/shear_band_cylinder.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
-using namespace ffp::mpm::testing;
+using namespace ffp::verification;
 
 namespace {
 
 constexpr double kDegree = kPi / 180.0;
 constexpr double kLength = 1e-3;  // ℓ: 2–5 d50 of the sand (0.2–0.5 mm); every length of the band scales with it
-
-/// The paper's sand (E' 2500 kPa, ν' 0.33, γ_d 14.6 kN/m³, φ'_p 39°, φ'_c 32°) softening at
-/// the paper's η = 8, with ψ = 0: held radially (u_r = 0) the soil cannot dilate, and a
-/// dilatancy would raise p' and the strength with it, against the softening studied here.
-StrainSofteningMohrCoulomb softening_sand() {
-  StrainSofteningParameters p;
-  p.elastic = {2.5e6, 0.33};
-  p.friction_peak_rad = 39.0 * kDegree;
-  p.friction_residual_rad = 32.0 * kDegree;
-  p.softening_factor = 8.0;
-  return StrainSofteningMohrCoulomb(p);
-}
-
-/// The annulus 0.5–0.55 m: a wall of 50 ℓ across which τ ∝ 1/r falls by 10 %, a gradient mild
-/// enough that ℓ, not the gradient, sets the band (at r_i = 1 m, half the gradient, the band is
-/// 6 % wider). p0 = 50 kPa: the vertical stress 3.4 m down in this sand. The wall travels 5 mm
-/// at 0.05 m/s: quasi-static (the two walls' forces agree to 0.2 %; at 0.025 m/s the band moves
-/// by 0.4 % and the post-peak force by less than 0.02 kPa).
-ShearBandCase cylinder_case(MaterialLaw law, std::optional<MicropolarParameters> micropolar) {
-  ShearBandCase c{std::move(law)};
-  c.density_kg_m3 = 14.6e3 / 9.81;
-  c.micropolar = micropolar;
-  c.inner_m = 0.5;
-  c.outer_m = 0.55;
-  c.confinement_Pa = 50e3;
-  c.wall_speed_m_s = 0.05;
-  c.ramp_s = 0.02;
-  c.end_displacement_m = 5e-3;
-  return c;
-}
-
-/// ℓ, G_c = G/2, j = ℓ² (the static answer does not depend on j: at j = ℓ²/10 and 4ℓ² the band
-/// and the forces move by less than 0.1 %).
-MicropolarParameters micropolar(double length_m) { return {length_m, 0.5, length_m * length_m}; }
 
 /// What one run at one cell size shows.
 struct Level {
@@ -160,10 +126,11 @@ TEST_CASE(
     "of a width set by l with a converging post-peak force when micropolar",
     "[mpm][verification][micropolar][shear-band]") {
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength};
-  const std::vector<Level> classical = run_levels(cylinder_case(softening_sand(), std::nullopt), cells);
+  const std::vector<Level> classical = run_levels(paper_sand_cylinder(paper_softening_sand(), std::nullopt), cells);
   check_classical(classical);
   check_measure(classical);
-  const std::vector<Level> cosserat = run_levels(cylinder_case(softening_sand(), micropolar(kLength)), cells);
+  const std::vector<Level> cosserat =
+      run_levels(paper_sand_cylinder(paper_softening_sand(), cylinder_micropolar(kLength)), cells);
   check_micropolar(cosserat);
   check_measure(cosserat);
   // The contrast at the finest level: the micropolar band is many classical bands wide.
@@ -174,10 +141,10 @@ TEST_CASE("shear band with the micro terms held at the sand's friction: still of
           "[mpm][verification][micropolar][shear-band]") {
   // |s| ≤ tan φ'_r p, |m| ≤ ℓ tan φ'_r p (models/micropolar.hpp): the band's regularisation must
   // survive the limits, which bound the micro terms where the grains turn far from the continuum.
-  MicropolarParameters limited = micropolar(kLength);
+  MicropolarParameters limited = cylinder_micropolar(kLength);
   limited.friction_limited = true;
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength};
-  const std::vector<Level> levels = run_levels(cylinder_case(softening_sand(), limited), cells);
+  const std::vector<Level> levels = run_levels(paper_sand_cylinder(paper_softening_sand(), limited), cells);
   check_measure(levels);
   // Many cells wide at every level, and a width that converges: where the couple stresses slip
   // the band's edge is set by the limit as well as by ℓ, and its width settles at first order
@@ -232,11 +199,12 @@ MohrCoulomb plastic_sand() { return MohrCoulomb({{2.5e6, 0.33}, 39.0 * kDegree, 
 TEST_CASE("shear band study: five cell sizes, the softening and the perfectly plastic sand, and l (hidden: ~5 min)",
           "[.][shear-band-study]") {
   const std::vector<double> cells = {2.0 * kLength, kLength, 0.5 * kLength, 0.25 * kLength, 0.125 * kLength};
-  const std::vector<Level> classical = run_levels(cylinder_case(softening_sand(), std::nullopt), cells);
+  const std::vector<Level> classical = run_levels(paper_sand_cylinder(paper_softening_sand(), std::nullopt), cells);
   print_table("SSMC, classical", classical);
   check_classical(classical);
   check_measure(classical);
-  const std::vector<Level> cosserat = run_levels(cylinder_case(softening_sand(), micropolar(kLength)), cells);
+  const std::vector<Level> cosserat =
+      run_levels(paper_sand_cylinder(paper_softening_sand(), cylinder_micropolar(kLength)), cells);
   print_table("SSMC, micropolar, l = 1 mm", cosserat);
   check_micropolar(cosserat);
   check_measure(cosserat);
@@ -247,7 +215,7 @@ TEST_CASE("shear band study: five cell sizes, the softening and the perfectly pl
   // (the walls differ by 0.03–0.08 %, 0.01–0.03 kPa), which lets the next cell yield a little
   // at the finest levels (measured 1.11 and 1.26 cells). The band still follows h: half a cell
   // more at most, and 16 times finer cells give a band at least 10 times narrower.
-  const std::vector<Level> plastic = run_levels(cylinder_case(plastic_sand(), std::nullopt), cells);
+  const std::vector<Level> plastic = run_levels(paper_sand_cylinder(plastic_sand(), std::nullopt), cells);
   print_table("MC (psi = 0, c' = 0.1 kPa), classical", plastic);
   for (const Level& l : plastic) {
     INFO("classical " << describe(l));
@@ -255,7 +223,8 @@ TEST_CASE("shear band study: five cell sizes, the softening and the perfectly pl
   }
   CHECK(plastic.back().width.half_maximum_m < 0.1 * plastic.front().width.half_maximum_m);
   // The micropolar skew stress hardens the response: no peak, a band of fixed width.
-  const std::vector<Level> plastic_cosserat = run_levels(cylinder_case(plastic_sand(), micropolar(kLength)), cells);
+  const std::vector<Level> plastic_cosserat =
+      run_levels(paper_sand_cylinder(plastic_sand(), cylinder_micropolar(kLength)), cells);
   print_table("MC (psi = 0, c' = 0.1 kPa), micropolar, l = 1 mm", plastic_cosserat);
   const BandWidth& finest = plastic_cosserat.back().width;
   const BandWidth& next = plastic_cosserat[cells.size() - 2].width;
@@ -269,7 +238,7 @@ TEST_CASE("shear band study: five cell sizes, the softening and the perfectly pl
             << "| ---: | ---: | ---: | ---: | ---: | ---: |\n";
   std::vector<double> width_per_length;
   for (const double length : {0.5 * kLength, kLength, 2.0 * kLength}) {
-    ShearBandCase c = cylinder_case(softening_sand(), micropolar(length));
+    ShearBandCase c = paper_sand_cylinder(paper_softening_sand(), cylinder_micropolar(length));
     c.outer_m = 0.6;
     c.end_past_peak_m = 5.0 * length;
     c.end_displacement_m = 4e-3 + 6.0 * length;  // the peak comes at about 3.5 mm of travel
