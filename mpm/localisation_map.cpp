@@ -1,5 +1,7 @@
 #include "mpm/localisation_map.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 #include "models/localisation.hpp"
@@ -35,6 +37,11 @@ void evaluate(const ElasticConstants& elastic, const MohrCoulombParameters& p, c
 }
 
 }  // namespace
+
+std::size_t minimum_yielding_for_share(std::size_t soil_particles) {
+  return std::max<std::size_t>(
+      1, static_cast<std::size_t>(std::ceil(kMinimumYieldingShare * static_cast<double>(soil_particles))));
+}
 
 LocalisationMap map_localisation(const MaterialGroup& group, std::span<const Voigt> stress) {
   LocalisationMap map;

@@ -32,6 +32,15 @@ struct LocalisationMap {
   }
 };
 
+/// The fewest yielding particles (on a face or an edge) a history row needs for its localised
+/// share to count as the run's largest (summary localised_fraction_max): a share of a handful of
+/// particles, as under the tip in the first millisecond of a drop, says nothing of the sand.
+/// kMinimumYieldingShare of the soil's particles, at least one.
+std::size_t minimum_yielding_for_share(std::size_t soil_particles);
+
+/// The share of the soil's particles that must yield (minimum_yielding_for_share).
+inline constexpr double kMinimumYieldingShare = 0.05;
+
 /// The map over particles [group.begin, group.end) of `stress` (absolute indices; the
 /// arrays are sized to `stress`, 0 outside the group). A law without a Mohr–Coulomb
 /// surface (linear elastic) never localises. Each particle's current φ', ψ, c' and the

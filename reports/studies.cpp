@@ -12,6 +12,7 @@ std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   studies.push_back(punch_bearing_study(scenes_dir));  // verification before the comparison with the paper
   studies.push_back(ffp_paper_comparison_study(scenes_dir));
   studies.push_back(ffp_localisation_study(scenes_dir));
+  studies.push_back(ffp_sands_side_by_side_study(scenes_dir));
   studies.push_back(ffp_chamber_study(scenes_dir));
   studies.push_back(ffp_compressibility_study(scenes_dir));
   studies.push_back(ffp_stiffness_study(scenes_dir));

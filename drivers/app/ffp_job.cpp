@@ -18,7 +18,8 @@
 /// yield_face_particles, yield_edge_particles, yield_apex_particles (not evaluated),
 /// localised_face_particles and localised_edge_particles; fields localised (0/1) and
 /// band_angle_deg (band normal from the r axis); summary localised_fraction_max and
-/// localised_time_s (the row where it is reached); plots/localisation.png (share and counts
+/// localised_time_s (the row where it is reached, among the rows where at least
+/// localised_fraction_min_yielding particles yield); plots/localisation.png (share and counts
 /// against time) and plots/localisation_tT.TTT.png (the map). Evaluated at the rows and fields only.
 #include <cmath>
 #include <cstdio>
@@ -182,7 +183,8 @@ void PenetrometerJob::record_row(CsvTable& history, Extremes& e) {
     row.insert(row.end(),
                {fraction, counts.face, counts.edge, counts.apex, counts.localised_face, counts.localised_edge});
     localisation_rows_.push_back(counts);
-    if (fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
+    const bool enough = map.on_face + map.on_edge >= mpm::minimum_yielding_for_share(ffp.soil_particles());
+    if (enough && fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
   }
   history.add_row(row);
   samples_.push_back(sample);
@@ -306,6 +308,7 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
   if (scene_.output.localisation) {
     sum["localised_fraction_max"] = e.localised_fraction;  // at the history rows
     sum["localised_time_s"] = e.localised_time_s;
+    sum["localised_fraction_min_yielding"] = mpm::minimum_yielding_for_share(ffp.soil_particles());
   }
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;

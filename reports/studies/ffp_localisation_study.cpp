@@ -103,24 +103,27 @@ Study ffp_localisation_study(const std::filesystem::path& scenes_dir) {
     const auto& depth = history.column("penetration_m");
     const double deepest_s = history.column(
         "time_s")[static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin())];
-    md.paragraph(
-        "During the drive: " + share_at(history, 0.01) + " at 10 ms, " + share_at(history, 0.03) + " at 30 ms, " +
-        share_at(history, peak_time) + " at the peak deceleration (" + fixed(1000 * peak_time, 1) + " ms), " +
-        share_at(history, 0.04) + " at 40 ms and " + share_at(history, 0.06) +
-        " at 60 ms. The share's largest value, localised_fraction_max = " + fixed(most, 3) +
-        ", comes at localised_time_s = " + fixed(when, 4) + " s, " +
-        (when > deepest_s ? "after the penetrometer's deepest point (" + fixed(1000 * deepest_s, 1) +
-                                " ms), while the body bounces and the sand unloads and reloads: "
-                          : "before the penetrometer's deepest point (" + fixed(1000 * deepest_s, 1) + " ms): ") +
-        share_at(history, when) +
-        ". The share swings from row to row as particles step on and off the surface with the impact's "
-        "waves; the counts say how many particles it is a share of. Each localised particle's band lies at " +
-        fixed(band_inclination_deg(face), 1) + "° to its major compression in the r–z plane on a face " +
-        "(Rudnicki & Rice for this sand's φ', ψ and ν', between Coulomb's 45° − φ'/2 and Roscoe's " +
-        "45° − ψ/2), at " + fixed(band_inclination_deg(compression), 1) + "° on a compression edge and " +
-        fixed(band_inclination_deg(extension), 1) +
-        "° on an extension edge with the hoop stress in the pair, and at 45° to the axes where the pair "
-        "lies in the r–z plane; the field band_angle_deg gives each band's normal in the r–z plane.");
+    md.paragraph("During the drive: " + share_at(history, 0.01) + " at 10 ms, " + share_at(history, 0.03) +
+                 " at 30 ms, " + share_at(history, peak_time) + " at the peak deceleration (" +
+                 fixed(1000 * peak_time, 1) + " ms), " + share_at(history, 0.04) + " at 40 ms and " +
+                 share_at(history, 0.06) + " at 60 ms. The share's largest value over the rows where at least " +
+                 fixed(figure(results, 0, "localised_fraction_min_yielding"), 0) +
+                 " particles yield (5 % of the sand: a share of a handful under the tip says nothing), "
+                 "localised_fraction_max = " +
+                 fixed(most, 3) + ", comes at localised_time_s = " + fixed(when, 4) + " s, " +
+                 (when > deepest_s
+                      ? "after the penetrometer's deepest point (" + fixed(1000 * deepest_s, 1) +
+                            " ms), while the body bounces and the sand unloads and reloads: "
+                      : "before the penetrometer's deepest point (" + fixed(1000 * deepest_s, 1) + " ms): ") +
+                 share_at(history, when) +
+                 ". The share swings from row to row as particles step on and off the surface with the impact's "
+                 "waves; the counts say how many particles it is a share of. Each localised particle's band lies at " +
+                 fixed(band_inclination_deg(face), 1) + "° to its major compression in the r–z plane on a face " +
+                 "(Rudnicki & Rice for this sand's φ', ψ and ν', between Coulomb's 45° − φ'/2 and Roscoe's " +
+                 "45° − ψ/2), at " + fixed(band_inclination_deg(compression), 1) + "° on a compression edge and " +
+                 fixed(band_inclination_deg(extension), 1) +
+                 "° on an extension edge with the hoop stress in the pair, and at 45° to the axes where the pair "
+                 "lies in the r–z plane; the field band_angle_deg gives each band's normal in the r–z plane.");
     include_run_figure(results, 0, "plots/localisation.png", "localisation_history.png",
                        "Localised share of the face and edge particles against time, and the counts of yielding "
                        "particles (on a face, on an edge, localised, at the apex)",

@@ -50,6 +50,12 @@ RunRequest reference_drop_run(const fs::path& scenes_dir, const std::string& lab
   return scene_run(scenes_dir, "ffp_reference.json", label, std::move(overrides));
 }
 
+RunRequest micropolar_drop_run(const fs::path& scenes_dir, const std::string& label) {
+  RunRequest run = scene_run(scenes_dir, "ffp_micropolar.json", label, {"output.localisation=true"});
+  run.expected_wall_s = 60.0;  // 79,100 steps of 6,000 particles (docs/verification.md#micropolar)
+  return run;
+}
+
 Extrapolation richardson(double coarse, double medium, double fine) {
   const double a = coarse - medium, b = medium - fine;
   if (std::isfinite(a) && std::isfinite(b) && a * b > 0 && std::abs(b) < std::abs(a)) {

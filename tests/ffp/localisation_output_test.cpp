@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -28,7 +29,7 @@ TEST_CASE("reference FFP on 2 cm with output.localisation: the sheared sand has 
                                      "--set",
                                      "end_time_s=0.03",
                                      "--set",
-                                     "output.history_interval_s=0.002",
+                                     "output.history_interval_s=0.0005",
                                      "--set",
                                      "output.field_times_s=[0.03]"};
     if (localisation) args.insert(args.end(), {"--set", "output.localisation=true"});
@@ -63,14 +64,28 @@ TEST_CASE("reference FFP on 2 cm with output.localisation: the sheared sand has 
     if (face[k] + edge[k] > 0.0)  // the CSV has 10 digits
       CHECK(fraction[k] == Approx((on_face[k] + on_edge[k]) / (face[k] + edge[k])).epsilon(1e-9));
   }
+  // The largest share counts only the rows where 5 % of the sand yields (a share of a handful
+  // of particles under the tip in the first milliseconds is noise).
+  const double minimum = summary["localised_fraction_min_yielding"].get<double>();
+  CHECK(minimum == std::ceil(0.05 * summary["soil_particles"].get<double>()));
+  double counted = 0.0, uncounted = 0.0;
+  for (std::size_t k = 0; k < fraction.size(); ++k) {
+    double& largest = face[k] + edge[k] >= minimum ? counted : uncounted;
+    largest = std::max(largest, fraction[k]);
+  }
+  INFO("largest share of the rows with at least " << minimum << " yielding: " << counted << "; of the others "
+                                                  << uncounted);
   CHECK(fraction.front() == 0.0);  // at rest before impact (K0 state inside the surface)
   CHECK(face.back() > 0.0);
   // Non-associated (ψ = 0) perfectly plastic MC: a face particle whose band plane is the
   // r–z plane has r_min = −0.074, an edge with θθ in its pair −0.08 or −0.05 (models/localisation
   // tests), so sheared sand localises.
-  CHECK(most > 0.1);
+  CHECK(counted > 0.1);
   CHECK(most <= 1.0);
-  CHECK(summary["localised_fraction_max"].get<double>() == Approx(most).epsilon(1e-9));  // the CSV has 10 digits
+  CHECK(summary["localised_fraction_max"].get<double>() == Approx(counted).epsilon(1e-9));  // the CSV has 10 digits
+  // Rows 0.5 ms apart: in the first millisecond some sand yields under the tip, less than 5 % of it,
+  // and those rows' shares are left out.
+  CHECK(uncounted > 0.0);
   CHECK(summary["localised_time_s"].get<double>() > 0.0);
   CHECK(summary["localised_time_s"].get<double>() <= 0.03);
 

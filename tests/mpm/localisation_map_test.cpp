@@ -103,3 +103,12 @@ TEST_CASE("the localisation map takes a softening sand's hardening modulus", "[m
   softening.softening_factor = 30.0;  // H = −0.40e6 Pa: above H_crit
   CHECK(map_of(StrainSofteningMohrCoulomb(softening)).localised_count() == 0);
 }
+
+TEST_CASE("the localised share counts only with 5 % of the sand yielding, at least one particle",
+          "[mpm][localisation]") {
+  CHECK(minimum_yielding_for_share(6086) == 305);       // the reference drop at 1 cm: 304.3 rounded up
+  CHECK(minimum_yielding_for_share(6080) == 304);       // exactly 5 %
+  CHECK(minimum_yielding_for_share(4 * 6086) == 1218);  // four times the particles at h/2: the same share
+  CHECK(minimum_yielding_for_share(10) == 1);
+  CHECK(minimum_yielding_for_share(0) == 1);  // no sand: no row counts, since none yields
+}

@@ -24,6 +24,23 @@ TEST_CASE("the report runs the shipped reference drop once, with its localisatio
       CHECK(key != plain);
       asking += key == drop;
     }
-  // The summary's reference drop, the localisation study, E' = 2500 kPa and δ = 20°.
-  CHECK(asking == 4);
+  // The summary's reference drop, the localisation study, the two sands side by side, E' = 2500 kPa
+  // and δ = 20°.
+  CHECK(asking == 5);
+}
+
+TEST_CASE("the report runs the shipped micropolar drop once, for the summary and the sands side by side", "[reports]") {
+  const fs::path scenes = fs::path(FFP_SOURCE_DIR) / "data" / "scenes";
+  const std::string plain = ffp::run_key(ffp::scene_run(scenes, "ffp_micropolar.json", "plain"), "v");
+  const std::string drop = ffp::run_key(ffp::micropolar_drop_run(scenes, "drop"), "v");
+  REQUIRE(plain != drop);
+  int asking = 0;
+  for (const ffp::Study& study : ffp::validation_studies(scenes))
+    for (const ffp::RunRequest& run : study.runs) {
+      INFO(study.title << ": " << run.label);
+      const std::string key = ffp::run_key(run, "v");
+      CHECK(key != plain);
+      asking += key == drop;
+    }
+  CHECK(asking == 2);  // a minute of steps each time it were asked differently
 }
