@@ -28,7 +28,11 @@ MicropolarGroup group_constants(const BodyDescription& body, std::size_t group) 
   if (!(m.micro_inertia_m2 > 0.0 && std::isfinite(m.micro_inertia_m2)))
     throw std::invalid_argument("body " + body.name + ": the micro-inertia must be > 0");
   const double G = elastic_constants(body.law).shear_modulus();
-  return {group, m.cosserat_shear_modulus(G), m.couple_modulus(G), m.micro_inertia_m2, m.length_m,
+  return {group,
+          m.cosserat_shear_modulus(G),
+          m.couple_modulus(G),
+          m.micro_inertia_m2,
+          m.length_m,
           m.friction_limited ? std::tan(law_friction_rad(body.law)) : 0.0};
 }
 
