@@ -8,6 +8,11 @@
 
 namespace ffp {
 
+/// The gravity with which a hydraulic conductivity k (m/s) is defined, k = κ ρ_w g/μ
+/// (κ the intrinsic permeability, μ the viscosity): a lab's, whatever the model's
+/// gravity. The drag n ρ_w g/k then stands for n μ/κ.
+inline constexpr double kConductivityGravity_m_s2 = 9.81;
+
 /// Terzaghi (1923): a layer of height H drained at its top and impermeable at its base, its
 /// excess p_0 at t = 0. With depth ζ, T = c_v t/H², M = π(2m + 1)/2,
 ///   p(ζ, t) = Σ (2 p_0/M) sin(Mζ/H) e^{−M²T},

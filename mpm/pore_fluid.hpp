@@ -10,6 +10,8 @@
 #include <string_view>
 #include <utility>
 
+#include "models/consolidation_solutions.hpp"  // kConductivityGravity_m_s2
+
 namespace ffp::mpm {
 
 /// The pore fluid (water by default), one for the whole model.
@@ -25,11 +27,6 @@ struct PoreFluid {
   /// The lowest gauge pore pressure (Pa, compression positive): cavitation.
   double cavitation_floor_Pa() const { return -(atmospheric_Pa - vapour_Pa); }
 };
-
-/// The gravity with which a hydraulic conductivity k (m/s) is defined, k = κ ρ_w g/μ
-/// (κ the intrinsic permeability, μ the viscosity): a lab's, whatever the model's
-/// gravity. The drag n ρ_w g/k then stands for n μ/κ.
-inline constexpr double kConductivityGravity_m_s2 = 9.81;
 
 /// How the permeability follows the porosity.
 enum class PermeabilityLaw : std::uint8_t {
@@ -51,6 +48,9 @@ struct SaturatedSoil {
   double porosity = 0.4;           ///< n_0, the initial porosity
   double permeability_m_s = 1e-4;  ///< k_0, the hydraulic conductivity at n_0
   PermeabilityLaw permeability_law = PermeabilityLaw::constant;
+  /// p_e at t = 0 over the hydrostatic pressure (Pa), e.g. a consolidation problem's p_0 with
+  /// the skeleton unloaded; 0: the body starts hydrostatic.
+  double initial_excess_pressure_Pa = 0.0;
 };
 
 /// Whether the pore fluid may cross a grid side.

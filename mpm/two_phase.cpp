@@ -98,7 +98,8 @@ TwoPhase make_two_phase(const ModelDescription& model, const Grid& grid, const P
     t.porosity[p] = t.bodies[b].initial_porosity;
     t.liquid_vr[p] = model.bodies[b].initial_velocity_r_m_s;
     t.liquid_vz[p] = model.bodies[b].initial_velocity_z_m_s;
-    t.set_pore_pressure(p, t.hydrostatic_pressure(particles.z[p]));
+    t.set_pore_pressure(p,
+                        t.hydrostatic_pressure(particles.z[p]) + model.bodies[b].saturated->initial_excess_pressure_Pa);
   }
   t.liquid.resize(grid.nodes());
   t.porous_mass.assign(grid.nodes(), 0.0);

@@ -11,7 +11,10 @@ constexpr double kMaxFluidBulkModulus_kPa = 1e8;  // 100 GPa: stiffer than any p
 constexpr double kMaxFluidDensity = 30000.0;      // as a material's
 constexpr double kMaxPermeability_m_s = 1.0;      // clean gravel
 
-const std::array<const char*, 3> kPoreKeys = {"porosity", "permeability_m_s", "permeability_law"};
+constexpr double kMaxExcessPressure_kPa = 1e6;  // 1 GPa: beyond any soil's
+
+const std::array<const char*, 4> kPoreKeys = {"porosity", "permeability_m_s", "permeability_law",
+                                              "initial_excess_pore_pressure_kPa"};
 
 }  // namespace
 
@@ -41,6 +44,13 @@ std::optional<mpm::SaturatedSoil> read_saturation(SceneReader& body) {
       body.choice("permeability_law", mpm::kPermeabilityLawNames, mpm::PermeabilityLaw::constant,
                   Doc("how k follows the porosity: constant, or Kozeny–Carman k_0 [n³/(1 − n)²]/[n_0³/(1 − n_0)²]")
                       .only_with(only));
+  soil.initial_excess_pressure_Pa =
+      1e3 * body.number("initial_excess_pore_pressure_kPa",
+                        Range::closed(-kMaxExcessPressure_kPa, kMaxExcessPressure_kPa, "kPa"), 0.0,
+                        Doc("the excess pore pressure p_e over hydrostatic at t = 0, the same at every particle, "
+                            "with the skeleton's stress as `initial_stress` gives it (e.g. a consolidation "
+                            "problem's p_0)")
+                            .only_with(only));
   return soil;
 }
 

@@ -67,8 +67,7 @@ Histories run(const testing::SaturatedColumn& c, const std::vector<double>& dept
   }
   h.pressure.resize(depths.size());
   h.total.resize(depths.size());
-  while (s.time_s < end_s) {
-    s.advance();
+  while (true) {  // the start first: the impulse integrals begin at t = 0
     const std::vector<double> p = testing::row_means(s, [&](std::size_t i) { return s.two_phase->pore_pressure[i]; });
     const std::vector<double> szz = testing::row_means(s, [&](std::size_t i) { return s.particles.stress[i][1]; });
     h.time_s.push_back(s.time_s);
@@ -77,6 +76,8 @@ Histories run(const testing::SaturatedColumn& c, const std::vector<double>& dept
       h.pressure[k].push_back(p[row]);
       h.total[k].push_back(p[row] - szz[row]);
     }
+    if (s.time_s >= end_s) break;
+    s.advance();
   }
   h.dt_s = s.dt_s;
   h.steps = s.step;
