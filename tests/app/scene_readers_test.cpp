@@ -214,6 +214,12 @@ TEST_CASE("mpm reader: the saturated Terzaghi column, and saturated keys where t
   CHECK(s.model.bodies[0].saturated->porosity == 0.4);
   CHECK(s.model.bodies[0].saturated->permeability_m_s == 1e-3);
   CHECK(s.model.bodies[0].saturated->permeability_law == mpm::PermeabilityLaw::constant);
+  CHECK(s.model.bodies[0].saturated->initial_excess_pressure_Pa == 0.0);  // hydrostatic by default
+  CHECK(mpm_scene("mpm_terzaghi_column", {"bodies.0.initial_excess_pore_pressure_kPa=2"})
+            .model.bodies[0]
+            .saturated->initial_excess_pressure_Pa == 2000.0);
+  CHECK(scene_error([] { mpm_scene("mpm_wave_column", {"bodies.0.initial_excess_pore_pressure_kPa=1"}); }) ==
+        "bodies[0].initial_excess_pore_pressure_kPa: only with saturated: true");
   CHECK(s.model.bodies[0].density_kg_m3 == 1600.0);  // the dry density
   CHECK(s.model.fluid.bulk_modulus_Pa == 2.2e9);
   CHECK(s.model.fluid.density_kg_m3 == 1000.0);

@@ -58,3 +58,21 @@ TEST_CASE("hydrostatic saturated column stays at p = gamma_w z, sigma'_v = gamma
     check(column);
   }
 }
+
+TEST_CASE("a saturated body's initial excess pore pressure adds to the hydrostatic one at every particle",
+          "[mpm][saturated]") {
+  testing::SaturatedColumn c;
+  c.gravity_m_s2 = 9.81;
+  ModelDescription m = c.model();
+  m.bodies[0].saturated->initial_excess_pressure_Pa = 1234.5;
+  const Simulation s(m);
+  const TwoPhase& t = *s.two_phase;
+  const double gamma_w = c.fluid_density_kg_m3() * 9.81;
+  double worst = 0.0;
+  for (std::size_t p = 0; p < s.particles.size(); ++p) {
+    worst = std::max(worst, std::abs(t.pore_pressure[p] - gamma_w * (c.height_m - s.particles.z[p]) - 1234.5));
+    CHECK(t.excess_pressure(s.particles, p) == Approx(1234.5).epsilon(1e-12));
+    CHECK(t.liquid_pressure[p] == t.pore_pressure[p]);  // no vapour at the start
+  }
+  CHECK(worst < 1e-9);
+}
