@@ -83,8 +83,9 @@ Study ffp_paper_comparison_study(const std::filesystem::path& scenes_dir) {
           fixed(100 * cal_depth, 1) + " cm", percent_difference(100 * cal_depth, 15.2), ""}});
     md.paragraph(
         "The last column is data/scenes/ffp_micropolar.json: the MC reference's sand with a grain-size length, on "
-        "the same 1 cm cells. Like the paper's sand it is one mesh's answer: its drop drifts with h "
-        "(docs/verification.md#micropolar-ffp-convergence; the section comparing the two sands below).");
+        "the same 1 cm cells, its micro terms held at its friction: one mesh's answer, not a converged one. The "
+        "converged drop (ℓ = 1.2 mm, three levels run outside the report) and its comparison with the paper and "
+        "the experiment are in docs/verification.md#micropolar-ffp-convergence.");
     {
       // The paper's Fig. 7d shows the reaction settling at the weight; ours is that plus the
       // inertia of a body not yet at rest (its momentum still changes over the window).
