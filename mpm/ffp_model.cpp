@@ -146,7 +146,14 @@ ModelDescription build_model(const FfpDescription& d, const FfpGridLayout& g, co
   m.bodies.push_back(BodyDescription{
       "soil", s.law, s.density_kg_m3, BoxRegion{0.0, s.radius_m, -s.depth_m, 0.0}, s.far_ppc_r, s.far_ppc_z, 0.0, 0.0,
       d.gravity_m_s2 > 0.0 ? std::optional<GeostaticStress>(GeostaticStress{s.k0, 0.0}) : std::nullopt,
-      s.disconnected_density_ratio * s.density_kg_m3, s.micropolar});
+      s.disconnected_density_ratio * s.density_kg_m3, s.micropolar, s.saturated});
+  if (s.saturated) {
+    // The wall and base as the scene says; the axis holds v_r = 0 for both phases, and the top
+    // row is in the air above the sand, whose free surface is drained.
+    m.fluid = s.fluid;
+    m.drainage = {Drainage::impermeable, s.wall_drainage, s.base_drainage, Drainage::drained};
+    m.water_table_z_m = s.water_depth_m;  // the sand's surface is z = 0
+  }
   const double h = d.mesh.min_cell_m;
   assert(!s.near_spacing_m || (*s.near_spacing_m > 0.0 && *s.near_spacing_m <= h));  // the reader's range
   const double spacing_r = s.near_spacing_m ? *s.near_spacing_m : h / s.near_ppc_r;
@@ -195,6 +202,10 @@ RigidPenetrometerSettings rigid_settings(const FfpDescription& d) {
   settings.external_force_N = d.external_force_N;
   settings.surface = d.surface;
   settings.project_particles = d.project_particles;
+  if (d.soil.saturated) {
+    settings.water_density_kg_m3 = d.soil.fluid.density_kg_m3;
+    settings.water_surface_z_m = d.soil.water_depth_m;
+  }
   return settings;
 }
 
@@ -254,6 +265,9 @@ FfpRun::FfpRun(const FfpDescription& d)
       mesh_(layout_.z_nodes_m, layout_.band_first, layout_.band_last, d.mesh.min_compressed_cell_m, layout_.base_row),
       simulation_(build_model(d, layout_, geometry_)) {
   Simulation& s = simulation_;
+  if (d.deformable && d.soil.saturated)
+    throw std::invalid_argument(
+        "a saturated sand takes a rigid penetrometer (the pore water's contact is the rigid body's)");
   if (d.deformable) {
     deformable_ = make_deformable(s, d);
     deformable_->attach(s);
@@ -264,6 +278,7 @@ FfpRun::FfpRun(const FfpDescription& d)
   }
   // The first step: the CFL step of the model with the penetrometer attached.
   s.dt_limit_s = cfl_time_step_limit(s);
+  if (s.two_phase) s.dt_limit_s = std::min(s.dt_limit_s, two_phase_time_step_limit(s));
   if (!s.settings.fixed_dt_s) s.dt_s = s.dt_next_s = s.settings.courant * s.dt_limit_s;
   const char* last = s.stages.contains("update_time_step") ? "update_time_step" : "check_time_step";
   s.stages.insert_before(last,

@@ -62,6 +62,15 @@ struct FfpSoil {
   /// A micropolar sand: the law unchanged, plus a micro-rotation and its linear elastic micro
   /// terms (mpm/micropolar.hpp). None: the classical sand.
   std::optional<MicropolarParameters> micropolar = std::nullopt;
+  /// A saturated sand (mpm/two_phase.hpp): its pores, the pore fluid and which chamber sides
+  /// drain it (the axis and the air's top row let nothing through / are drained). None: dry.
+  std::optional<SaturatedSoil> saturated = std::nullopt;
+  PoreFluid fluid;
+  Drainage wall_drainage = Drainage::impermeable, base_drainage = Drainage::impermeable;
+  /// Free water above the sand surface (m): the water table sits this high above z = 0, the
+  /// sand's pore pressure is hydrostatic from it, and the penetrometer's part below it is
+  /// buoyed (mpm/rigid_penetrometer.hpp). Saturated only.
+  double water_depth_m = 0.0;
 };
 
 struct FfpMesh {

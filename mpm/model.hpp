@@ -143,6 +143,10 @@ struct ModelDescription {
   /// The pore fluid of the saturated bodies and which sides drain it (unused without one).
   PoreFluid fluid;
   DrainageConditions drainage;
+  /// The water table z_wt of the hydrostatic pore pressure (m): above a body's K0 surface for
+  /// a sea bed under water (its surface then carries ρ_w g (z_wt − z_surface)). None: the
+  /// first saturated body's K0 surface.
+  std::optional<double> water_table_z_m;
 };
 
 }  // namespace ffp::mpm

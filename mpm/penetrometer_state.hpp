@@ -20,6 +20,12 @@ struct PenetrometerState {
   double cone_impulse_N_s = 0.0;
   double cone_normal_impulse_N_s = 0.0;
   double shaft_impulse_N_s = 0.0;
+  /// Saturated sand: the part of impulse_N_s the pore water's contact gave (in the cone's and
+  /// the shaft's too), and the water's buoyancy on the body, now and summed (in impulse_N_s,
+  /// in neither of the splits: impulse − cone − shaft − buoyancy is the top's).
+  double pore_water_impulse_N_s = 0.0;
+  double buoyancy_N = 0.0;
+  double buoyancy_impulse_N_s = 0.0;
   std::size_t contact_nodes = 0;  ///< nodes where the soil's velocity was corrected in the last step
                                   ///< (contact.surface particles: particles pressed against the outline)
   /// contact.surface particles: the last Gauss–Seidel sweep's largest velocity change (m/s).

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "models/bracketed_root.hpp"
+#include "models/math_constants.hpp"
 #include "mpm/diagnostics.hpp"
 
 namespace ffp::mpm {
@@ -18,9 +20,33 @@ RigidPenetrometer::RigidPenetrometer(const RigidPenetrometerSettings& settings)
       settings.force != RigidBodyForce::contact_impulse)
     throw std::invalid_argument("the particles' contact surface exchanges impulses: it needs contact_impulse");
   state_.velocity_m_s = settings.velocity_m_s;
+  if (settings.water_density_kg_m3 > 0.0) {
+    // V_below(h) = ∫_0^h π r(y)² dy by the midpoint rule on 2000 slices: within 1e-6 of the
+    // whole volume (PenetrometerShape::volume_m3 takes 20 000), linear between the slices.
+    const int n = 2000;
+    volume_step_m_ = settings.shape.total_length_m() / n;
+    volume_below_m3_.assign(n + 1, 0.0);
+    for (int k = 0; k < n; ++k) {
+      const double r = geometry_.radius_at((k + 0.5) * volume_step_m_);
+      volume_below_m3_[k + 1] = volume_below_m3_[k] + kPi * r * r * volume_step_m_;
+    }
+  }
+}
+
+double RigidPenetrometer::buoyancy_N(double gravity_m_s2) const {
+  if (volume_below_m3_.empty()) return 0.0;
+  // Archimedes: the hydrostatic water pressure ρ_w g (z_wt − z) over the whole outline.
+  const double height = std::clamp((settings_.water_surface_z_m - tip_z_) / volume_step_m_, 0.0,
+                                   static_cast<double>(volume_below_m3_.size() - 1));
+  const auto k = std::min(static_cast<std::size_t>(height), volume_below_m3_.size() - 2);
+  const double t = height - static_cast<double>(k);
+  const double volume = (1.0 - t) * volume_below_m3_[k] + t * volume_below_m3_[k + 1];
+  return settings_.water_density_kg_m3 * gravity_m_s2 * volume;
 }
 
 void RigidPenetrometer::attach(Simulation& s) {
+  if (s.two_phase && settings_.surface == ContactSurface::particles)
+    throw std::invalid_argument("a saturated sand takes the contact on the nodes (the pore water's is nodal)");
   // After the fixities, so that the contact law sees v_r = 0 on the axis (and keeps it).
   s.stages.insert_before("update_particles", {"apply_rigid_contact", [this](Simulation& sim) { apply_contact(sim); }});
   // The classic MUSL strains from a remapped field: correct it too (with the particles' surface also
@@ -61,6 +87,34 @@ void RigidPenetrometer::find_nodes(const Simulation& s) {
       soil_star_.push_back({f.velocity_new_r[k], f.velocity_new_z[k]});
     }
   }
+  liquid_star_.clear();
+  if (!s.two_phase) return;
+  const NodalField& w = s.two_phase->liquid;
+  for (const ContactNode& c : nodes_) liquid_star_.push_back({w.velocity_new_r[c.node], w.velocity_new_z[c.node]});
+}
+
+void RigidPenetrometer::exchange_with_liquid(const Simulation& s, double v, std::size_t c, SoilExchange& out) {
+  const TwoPhase& t = *s.two_phase;
+  const std::size_t k = nodes_[c].node;
+  const Vector2 n = nodes_[c].normal, before = liquid_star_[c];
+  if (!(t.liquid.mass[k] > s.mass_floor_kg)) {
+    liquid_after_[c] = before;
+    return;
+  }
+  // Impermeable and frictionless: the normal part of the solid's law, with its cap.
+  const ContactLaw impermeable{0.0, false, settings_.contact.velocity_scaling};
+  const Vector2 after = contact_velocity(before, {0.0, v}, n, impermeable, s.dt_s / s.grid.min_spacing());
+  liquid_after_[c] = after;
+  const double m = t.porous_mass[k];  // the pores' water: M̄_w = Σ S n ρ_w V
+  const double dp_z = m * (after.z - before.z);
+  out.impulse_z += dp_z;
+  out.liquid_z += dp_z;
+  if (n.z < 0.0) {
+    out.cone += dp_z;
+    out.cone_normal += m * ((after.r - before.r) * n.r + (after.z - before.z) * n.z) * n.z;
+  } else if (n.z == 0.0) {
+    out.shaft += dp_z;
+  }
 }
 
 const RigidPenetrometer::SoilExchange& RigidPenetrometer::exchange_with_soil(const Simulation& s, double v) {
@@ -86,6 +140,8 @@ const RigidPenetrometer::SoilExchange& RigidPenetrometer::exchange_with_soil(con
       out.shaft += dp_z;
     }
   }
+  liquid_after_.resize(liquid_star_.size());
+  for (std::size_t c = 0; c < liquid_star_.size(); ++c) exchange_with_liquid(s, v, c, out);
   exchange_ = out;
   return exchange_;
 }
@@ -97,7 +153,15 @@ double RigidPenetrometer::correct_soil(Simulation& s, double v) {
     f.velocity_new_r[nodes_[c].node] = soil_after_[c].r;
     f.velocity_new_z[nodes_[c].node] = soil_after_[c].z;
   }
+  if (s.two_phase) {
+    NodalField& w = s.two_phase->liquid;
+    for (std::size_t c = 0; c < liquid_after_.size(); ++c) {
+      w.velocity_new_r[nodes_[c].node] = liquid_after_[c].r;
+      w.velocity_new_z[nodes_[c].node] = liquid_after_[c].z;
+    }
+  }
   take_soil_impulse_split(exchange_.cone, exchange_.cone_normal, exchange_.shaft);
+  state_.pore_water_impulse_N_s -= kTwoPi * exchange_.liquid_z;
   return exchange_.impulse_z;
 }
 
@@ -173,13 +237,15 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
   const double g = s.gravity_m_s2.value_or(0.0);
   const double v0 = state_.velocity_m_s;
   const double M = settings_.mass_kg;
+  // The water's buoyancy (saturated sand; 0 otherwise) at the step's start, beside t of eq. 1.
+  const double buoyancy = buoyancy_N(g);
   double v = v0;
   double reaction = 0.0;
   if (settings_.motion == RigidMotion::prescribed) {
     v = settings_.velocity_m_s;
     reaction = -kTwoPi * correct_soil(s, v) / dt;
   } else if (settings_.force == RigidBodyForce::contact_impulse) {
-    const double v_free = v0 + dt * (-g + settings_.external_force_N / M);
+    const double v_free = v0 + dt * (-g + (settings_.external_force_N + buoyancy) / M);
     v = solve_free_velocity(s, v_free);
     reaction = -kTwoPi * correct_soil(s, v) / dt;  // per radian, exactly what the soil received
     v = v_free + dt * reaction / M;  // the same impulse taken from the body (v equals the root to round-off)
@@ -189,9 +255,13 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
     double sum = 0.0;
     for (const ContactNode& c : nodes_) sum += f.internal_force_z[c.node];
     reaction = kTwoPi * sum;
-    v = v0 + dt * (-g + (reaction + settings_.external_force_N) / M);  // eqs. 1 and 3
+    v = v0 + dt * (-g + (reaction + settings_.external_force_N + buoyancy) / M);  // eqs. 1 and 3
     correct_soil(s, v);
   }
+  // The buoyancy is part of what the surroundings exert: in the reaction, as an accelerometer reads it.
+  reaction += buoyancy;
+  state_.buoyancy_N = buoyancy;
+  state_.buoyancy_impulse_N_s += buoyancy * dt;
   state_.velocity_m_s = v;
   state_.reaction_N = reaction;
   state_.impulse_N_s += reaction * dt;
@@ -212,6 +282,17 @@ void RigidPenetrometer::apply_contact_remapped(Simulation& s) {
         contact_velocity({f.velocity_r[c.node], f.velocity_z[c.node]}, body, c.normal, settings_.contact, dt_over_h);
     f.velocity_r[c.node] = after.r;
     f.velocity_z[c.node] = after.z;
+  }
+  if (!s.two_phase) return;
+  // The pore water's remapped velocities too (its strain rate reads them), impermeable and frictionless.
+  NodalField& w = s.two_phase->liquid;
+  const ContactLaw impermeable{0.0, false, settings_.contact.velocity_scaling};
+  for (const ContactNode& c : nodes_) {
+    if (!(w.mass[c.node] > s.mass_floor_kg)) continue;
+    const Vector2 after =
+        contact_velocity({w.velocity_r[c.node], w.velocity_z[c.node]}, body, c.normal, impermeable, dt_over_h);
+    w.velocity_r[c.node] = after.r;
+    w.velocity_z[c.node] = after.z;
   }
 }
 

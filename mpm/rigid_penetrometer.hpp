@@ -26,6 +26,18 @@
 /// using it as the contact law's surface velocity, before the soil's particles
 /// are updated (Fig. 5).
 ///
+/// Saturated sand (mpm/two_phase.hpp): the body is impermeable. At every contact node the
+/// liquid's velocity takes the same law, frictionless (its normal velocity follows the body's
+/// while it approaches, its tangential velocity is free, it separates freely), against the
+/// same body velocity v. The liquid's nodal equation is the true liquid's divided by n, so the
+/// momentum the pores' water exchanges is M̄_w Δv_w (M̄_w = Σ S n ρ_w V): the soil's impulse
+/// above becomes Σ_i [m_i (v_s,i(v) − v*_s,i) + M̄_w,i (v_w,i(v) − v*_w,i)]_z, whose slope in v
+/// is still bounded, and the body's reaction is the sum of both phases' (the mixture's; the
+/// solid's nodal force already holds the excess pore pressure, less the liquid's inertia
+/// M̄_w a_w that the liquid's share returns). The hydrostatic part of the water pressure, which
+/// the two-phase step balances before it discretises, acts on the body as a whole as its
+/// buoyancy ρ_w g V_below(z_wt) (Archimedes), added to the reaction.
+///
 /// Particle projection (optional, project_particles): after the body has moved,
 /// every soil particle inside the exact outline is put back onto it along the
 /// outline's normal. Why: the contact acts at nodes, and a particle moves with
@@ -89,6 +101,10 @@ struct RigidPenetrometerSettings {
   std::uint8_t soil_field = 0;
   /// Put soil particles found inside the outline after a step back onto it (see above).
   bool project_particles = false;
+  /// The water the body stands in (saturated sand): its density (0: none, no buoyancy) and the
+  /// height of its free surface (the water table).
+  double water_density_kg_m3 = 0.0;
+  double water_surface_z_m = 0.0;
 };
 
 class RigidPenetrometer {
@@ -121,6 +137,8 @@ class RigidPenetrometer {
   const RigidPenetrometerSettings& settings() const { return settings_; }
   /// Penetrometer nodes holding soil mass in the last step, with their normals.
   const std::vector<ContactNode>& nodes() const { return nodes_; }
+  /// The water's buoyancy on the body at its current position, ρ_w g V_below (N, + up).
+  double buoyancy_N(double gravity_m_s2) const;
 
  private:
   void find_nodes(const Simulation& simulation);
@@ -131,8 +149,11 @@ class RigidPenetrometer {
   /// part (Δp·n) n_z; on the shaft, n_z = 0), and the nodes whose velocity the law changes.
   struct SoilExchange {
     double impulse_z = 0.0, cone = 0.0, cone_normal = 0.0, shaft = 0.0;
+    double liquid_z = 0.0;  ///< the pore water's part of impulse_z (saturated sand)
     std::size_t corrected = 0;
   };
+  /// The pore water's share of the exchange at contact node c against v into liquid_after_.
+  void exchange_with_liquid(const Simulation& simulation, double v, std::size_t c, SoilExchange& out);
   /// The exchange against v into exchange_, and each node's v_s,i(v) into soil_after_;
   /// nothing written to the grid (the residual of the free body's velocity tries many v).
   const SoilExchange& exchange_with_soil(const Simulation& simulation, double v);
@@ -149,8 +170,13 @@ class RigidPenetrometer {
   double tip_z0_, tip_z_;
   PenetrometerState state_;
   std::vector<ContactNode> nodes_;
-  std::vector<Vector2> soil_star_;    ///< v*_s at the nodes, before contact
-  std::vector<Vector2> soil_after_;   ///< v_s(v) at the nodes, of the last exchange
+  std::vector<Vector2> soil_star_;     ///< v*_s at the nodes, before contact
+  std::vector<Vector2> soil_after_;    ///< v_s(v) at the nodes, of the last exchange
+  std::vector<Vector2> liquid_star_;   ///< saturated sand: v*_w at the nodes, before contact
+  std::vector<Vector2> liquid_after_;  ///< v_w(v) of the last exchange
+  /// V_below(k·Δ) for k = 0…n: the body's volume up to each height above the tip (buoyancy).
+  std::vector<double> volume_below_m3_;
+  double volume_step_m_ = 0.0;
   SoilExchange exchange_;             ///< the last exchange
   ParticleContact particle_contact_;  ///< ContactSurface::particles: this step's candidates
 };

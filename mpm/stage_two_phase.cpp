@@ -225,7 +225,8 @@ void compute_liquid_strain(Simulation& s) {
 //   p = max(p*, −(p_atm − p_vap))                   (the fluid cavitates at its vapour pressure; below
 //                                                     the floor p* keeps the vapour's volume, so that
 //                                                     a recompression condenses it first)
-//   n ← 1 − m_s/(ρ_s V)                              (the solid's mass is kept; grains incompressible)
+//   n ← max(1 − m_s/(ρ_s V), 0.5 n_0)                (the solid's mass is kept; grains incompressible;
+//                                                     the floor: closed pores, kClosedPorosityRatio)
 void update_pore_pressure(Simulation& s) {
   TwoPhase& t = *s.two_phase;
   const Particles& P = s.particles;
@@ -233,6 +234,7 @@ void update_pore_pressure(Simulation& s) {
   if (smoothed(s))
     cell_sums(s, t.cell_strain_volume, t.cell_liquid_strain, [&](std::size_t p) { return t.liquid_strain[p]; });
   const double K = t.fluid.bulk_modulus_Pa, floor = t.fluid.cavitation_floor_Pa();
+  std::size_t closed = 0;
   for (std::size_t p = 0; p < P.size(); ++p) {
     if (!t.saturated(P, p)) continue;
     const double n = t.porosity[p];
@@ -240,8 +242,14 @@ void update_pore_pressure(Simulation& s) {
     const double liquid = cell_mean_or_own(s, p, t.cell_strain_volume, t.cell_liquid_strain, limit, t.liquid_strain[p]);
     t.liquid_pressure[p] -= K / n * ((1.0 - n) * solid + n * liquid);
     t.pore_pressure[p] = std::max(t.liquid_pressure[p], floor);
-    t.porosity[p] = 1.0 - P.mass[p] / (t.bodies[P.body[p]].grain_density_kg_m3 * P.volume[p]);
+    const PoreSpace& pores = t.bodies[P.body[p]];
+    const double open = 1.0 - P.mass[p] / (pores.grain_density_kg_m3 * P.volume[p]);
+    const double least = kClosedPorosityRatio * pores.initial_porosity;
+    closed += open < least;
+    t.porosity[p] = std::max(open, least);
   }
+  t.closed_pores = closed;
+  t.closed_pores_max = std::max(t.closed_pores_max, closed);
 }
 
 double two_phase_time_step_limit(const Simulation& s) {

@@ -85,6 +85,7 @@ TwoPhase make_two_phase(const ModelDescription& model, const Grid& grid, const P
     if (d.saturated && d.initial_stress && model.gravity_m_s2 && !t.water_table_z_m)
       t.water_table_z_m = d.initial_stress->surface_z_m;
   }
+  if (model.water_table_z_m && t.water_table_z_m) t.water_table_z_m = model.water_table_z_m;
   const std::size_t n = particles.size();
   t.porosity.assign(n, 0.0);
   t.liquid_vr.assign(n, 0.0);
@@ -119,6 +120,14 @@ double mieremet_time_step(const TwoPhaseWave& w, double L) {
   // b² − 4c ≥ 0 always (the eigenvalues of M⁻¹K are real and positive); clamp round-off.
   const double B = b + std::sqrt(std::max(0.0, b * b - 4.0 * c));
   return 8.0 / (2.0 * a + std::sqrt(4.0 * a * a + 8.0 * B));
+}
+
+TwoPhaseStepBounds two_phase_step_bounds(const TwoPhaseWave& w, double L) {
+  const double n = w.porosity, rho_w = w.fluid_density_kg_m3;
+  const double rho = (1.0 - n) * w.grain_density_kg_m3 + n * rho_w;  // saturated density
+  const double c_1 = std::sqrt((w.constrained_modulus_Pa + w.fluid_bulk_modulus_Pa / n) / rho);
+  const double rho_tilde = rho + (1.0 / n - 2.0) * rho_w;
+  return {L / c_1, 2.0 * rho_tilde * w.permeability_m_s / (rho_w * kConductivityGravity_m_s2)};
 }
 
 }  // namespace ffp::mpm

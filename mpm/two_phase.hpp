@@ -20,7 +20,7 @@
 ///   M_w = Σ_p S_ip ρ_w V_p,  M̄_w = Σ_p S_ip n_p ρ_w V_p,  Q = Σ_p S_ip n_p ρ_w g V_p / k_p,
 ///   f_e = Σ_p V_p p_e,p (G_ip + S_ip/r_p e_r)   (the internal force of −p_e I)
 ///   storage:  Δp* = −(K_w/n) [(1 − n) Δε_v,s + n Δε_v,w],  p = max(p*, −(p_atm − p_vap))
-///   porosity: n = 1 − m_s/(ρ_s V)   (incompressible grains)
+///   porosity: n = max(1 − m_s/(ρ_s V), 0.5 n_0)   (incompressible grains; kClosedPorosityRatio)
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -32,6 +32,15 @@
 #include "mpm/particles.hpp"
 
 namespace ffp::mpm {
+
+/// The least porosity the two-phase terms take, as a fraction of a body's initial one. The laws
+/// let a skeleton compress without bound, and a few particles squeezed on the axis under a cone's
+/// apex do (the dry reference drop's deepest: V/V0 = 0.47); with incompressible grains their
+/// porosity n = 1 − m_s/(ρ_s V) would fall to 0 and below, where the storage K_w/n, the drag and
+/// the step have no meaning. Below this the pores count as closed: n is held at the floor
+/// (TwoPhase::closed_pores counts the particles there), below any sand's densest packing
+/// (n_min ≈ 0.3 for quartz sands, e_min ≈ 0.45), so no physical state reaches it.
+inline constexpr double kClosedPorosityRatio = 0.5;
 
 /// A body's pores.
 struct PoreSpace {
@@ -46,8 +55,9 @@ struct TwoPhase {
   PoreFluid fluid;
   std::vector<PoreSpace> bodies;  ///< per body
   double gravity_m_s2 = 0.0;      ///< the model's (0 without gravity)
-  /// The water table z_wt of the hydrostatic pore pressure p_h = ρ_w g (z_wt − z): the first
-  /// saturated body's K0 surface. None (no gravity or no K0 stress): p_h = 0.
+  /// The water table z_wt of the hydrostatic pore pressure p_h = ρ_w g (z_wt − z): the model's
+  /// (ModelDescription::water_table_z_m), else the first saturated body's K0 surface. None (no
+  /// gravity or no K0 stress): p_h = 0.
   std::optional<double> water_table_z_m;
 
   // Per particle (all of them; a dry body's entries stay 0).
@@ -59,6 +69,9 @@ struct TwoPhase {
   /// recompression condenses it before the pressure rises again.
   std::vector<double> liquid_pressure;
   std::vector<double> liquid_strain;  ///< Δε_v,w = Δt ∇·v_w of this step
+  /// Particles whose porosity is held at kClosedPorosityRatio × n_0 after the last step, and the
+  /// most at any step.
+  std::size_t closed_pores = 0, closed_pores_max = 0;
 
   /// The liquid's nodes: mass = M_w, momentum Σ S ρ_w V v_w, internal force f_e;
   /// velocities as a NodalField's (its external force stays zero).
@@ -112,5 +125,14 @@ struct TwoPhaseWave {
   double constrained_modulus_Pa, fluid_bulk_modulus_Pa;
 };
 double mieremet_time_step(const TwoPhaseWave& w, double element_length_m);
+
+/// The two simpler bounds Anura3D gives beside Mieremet's step (Scientific Manual 2022 §4.7.3):
+/// the undrained wave's L/c_1, c_1 = √((E_c + K_w/n)/ρ_sat), and the drag's 2ρ̃k/(ρ_w g),
+/// ρ̃ = ρ_sat + (1/n − 2) ρ_w. The smaller of them names the term that limits the step.
+struct TwoPhaseStepBounds {
+  double undrained_wave_s = 0.0, drag_s = 0.0;
+  bool drag_limited() const { return drag_s < undrained_wave_s; }
+};
+TwoPhaseStepBounds two_phase_step_bounds(const TwoPhaseWave& w, double element_length_m);
 
 }  // namespace ffp::mpm

@@ -21,11 +21,17 @@
 /// localised_time_s (the row where it is reached, among the rows where at least
 /// localised_fraction_min_yielding particles yield); plots/localisation.png (share and counts
 /// against time) and plots/localisation_tT.TTT.png (the map). Evaluated at the rows and fields only.
+/// On a saturated sand (soil.saturated): history columns u1_kPa, u1_excess_kPa, u1_particles,
+/// u2_kPa, u2_excess_kPa, u2_particles (mpm/cone_pore_pressure.hpp), pore_water_impulse_N_s and
+/// buoyancy_N; fields pore_pressure_kPa, excess_pore_pressure_kPa and porosity; record.csv's
+/// pore_pressure_kPa is u2; summary u1/u2 extremes and u2's dissipation (pore_pressure_summary.hpp),
+/// two_phase_dt_limit_s and time_step_limited_by; plots/pore_pressure.png (u1, u2, hydrostatic).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include "drivers/app/ffp_output.hpp"
@@ -35,8 +41,10 @@
 #include "drivers/app/memory_check.hpp"
 #include "drivers/app/mpm_run_loop.hpp"
 #include "drivers/app/particle_fields.hpp"
+#include "drivers/app/pore_pressure_summary.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "models/math_constants.hpp"
+#include "mpm/cone_pore_pressure.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/localisation_map.hpp"
 #include "mpm/parallel.hpp"
@@ -65,6 +73,7 @@ struct Extremes {
   std::size_t disconnected = 0, inflated = 0;
   double volume_ratio = 1.0;
   double localised_fraction = 0.0, localised_time_s = 0.0;  // with output.localisation
+  double u1_max_kPa = -std::numeric_limits<double>::infinity(), u1_min_kPa = std::numeric_limits<double>::infinity();
 };
 
 class PenetrometerJob : public Job {
@@ -76,6 +85,8 @@ class PenetrometerJob : public Job {
         run_(std::make_unique<mpm::FfpRun>(scene_.model)),
         initial_dt_s_(run_->simulation().dt_s),
         initial_energy_(mpm::measure(run_->simulation())) {
+    if (saturated())
+      initial_two_phase_step_ = two_phase_step(), initial_cfl_s_ = mpm::cfl_time_step_limit(run_->simulation());
     if (run_->deformable()) initial_penetrometer_energy_ = mpm::measure_body(run_->simulation(), 1);
   }
 
@@ -96,6 +107,15 @@ class PenetrometerJob : public Job {
           << run_->penetrometer_mass_kg() << " kg\n";
     }
     out << "stages: " << s.stages.describe() << "\n";
+    if (s.two_phase) {
+      const TwoPhaseStep& step = *initial_two_phase_step_;
+      out << "CFL limit h_min/(c_p + |v|max) of the sand's skeleton: " << initial_cfl_s_ << " s\n";
+      out << "two-phase limit (Mieremet 2015, L = h_min): " << step.limit_s << " s, limited by "
+          << (step.bounds.drag_limited() ? "the drag 2ρ̃k/(ρ_w g) = " : "the undrained wave L/c_1 = ")
+          << (step.bounds.drag_limited() ? step.bounds.drag_s : step.bounds.undrained_wave_s)
+          << " s (the other: " << (step.bounds.drag_limited() ? "the undrained wave " : "the drag ")
+          << (step.bounds.drag_limited() ? step.bounds.undrained_wave_s : step.bounds.drag_s) << " s)\n";
+    }
     out << "CFL limit h_min/(c_p + |v|max): " << s.dt_limit_s << " s; time step " << s.dt_s << " s (Courant "
         << s.settings.courant << ", recomputed every step)\n";
   }
@@ -124,6 +144,7 @@ class PenetrometerJob : public Job {
   void observe_step(Extremes& e) const;
   void observe_row(Extremes& e) const;
   void write_summary(json& sum, const MpmRunResult& result, const Extremes& e, std::size_t field_files) const;
+  void write_pore_pressure_summary(json& sum, const Extremes& e) const;
   /// A flat punch's plateau: the mean pressure over its settlement window, from the exact impulse.
   double plateau_pressure_Pa() const {
     const BearingPlateau& b = *scene_.bearing;
@@ -131,6 +152,21 @@ class PenetrometerJob : public Job {
     return mean_reaction(samples_, b.from_ratio * R / v0, b.to_ratio * R / v0) / base_area_m2();
   }
   void write_plots(const fs::path& plots) const;
+  bool saturated() const { return run_->simulation().two_phase.has_value(); }
+  /// The saturated sand's two-phase step at the start: Mieremet's limit at its initial state and
+  /// Anura3D's two simpler bounds, the smaller of which names the limiting term.
+  struct TwoPhaseStep {
+    double limit_s = 0.0;
+    mpm::TwoPhaseStepBounds bounds;
+  };
+  TwoPhaseStep two_phase_step() const {
+    const mpm::Simulation& s = run_->simulation();
+    const mpm::TwoPhase& t = *s.two_phase;
+    const mpm::PoreSpace& pores = t.bodies[run_->soil_body()];
+    const mpm::TwoPhaseWave wave{pores.initial_porosity, pores.initial_permeability_m_s,    pores.grain_density_kg_m3,
+                                 t.fluid.density_kg_m3,  s.groups[0].constrained_modulus(), t.fluid.bulk_modulus_Pa};
+    return {mpm::two_phase_time_step_limit(s), mpm::two_phase_step_bounds(wave, s.grid.min_spacing())};
+  }
 
   FfpScene scene_;
   std::string name_;
@@ -139,7 +175,10 @@ class PenetrometerJob : public Job {
   double initial_dt_s_;
   mpm::Diagnostics initial_energy_, initial_penetrometer_energy_;
   std::vector<FfpSample> samples_;
-  std::vector<LocalisationRow> localisation_rows_;  ///< with output.localisation
+  std::vector<LocalisationRow> localisation_rows_;      ///< with output.localisation
+  std::vector<ShoulderPressureRow> shoulder_rows_;      ///< saturated sand
+  std::optional<TwoPhaseStep> initial_two_phase_step_;  ///< saturated sand, at t = 0
+  double initial_cfl_s_ = 0.0;                          ///< saturated sand: the skeleton's CFL limit at t = 0
 };
 
 CsvTable PenetrometerJob::history_table() const {
@@ -154,6 +193,10 @@ CsvTable PenetrometerJob::history_table() const {
   if (scene_.output.localisation)
     for (const char* c : {"localised_fraction", "yield_face_particles", "yield_edge_particles", "yield_apex_particles",
                           "localised_face_particles", "localised_edge_particles"})
+      columns.emplace_back(c);
+  if (saturated())
+    for (const char* c : {"u1_kPa", "u1_excess_kPa", "u1_particles", "u2_kPa", "u2_excess_kPa", "u2_particles",
+                          "pore_water_impulse_N_s", "buoyancy_N"})
       columns.emplace_back(c);
   return CsvTable(columns);
 }
@@ -185,6 +228,15 @@ void PenetrometerJob::record_row(CsvTable& history, Extremes& e) {
     localisation_rows_.push_back(counts);
     const bool enough = map.on_face + map.on_edge >= mpm::minimum_yielding_for_share(ffp.soil_particles());
     if (enough && fraction > e.localised_fraction) e.localised_fraction = fraction, e.localised_time_s = s.time_s;
+  }
+  if (saturated()) {
+    const mpm::ConePorePressure u = mpm::cone_pore_pressure(ffp);
+    row.insert(row.end(), {1e-3 * u.u1.pressure_Pa, 1e-3 * u.u1.excess_Pa, static_cast<double>(u.u1.particles),
+                           1e-3 * u.u2.pressure_Pa, 1e-3 * u.u2.excess_Pa, static_cast<double>(u.u2.particles),
+                           st.pore_water_impulse_N_s, st.buoyancy_N});
+    shoulder_rows_.push_back({s.time_s, sample.velocity_m_s, 1e-3 * u.u2.pressure_Pa, 1e-3 * u.u2.excess_Pa});
+    e.u1_max_kPa = std::max(e.u1_max_kPa, 1e-3 * u.u1.pressure_Pa);
+    e.u1_min_kPa = std::min(e.u1_min_kPa, 1e-3 * u.u1.pressure_Pa);
   }
   history.add_row(row);
   samples_.push_back(sample);
@@ -218,6 +270,7 @@ void PenetrometerJob::run(RunContext& context) {
   CsvTable history = history_table();
   samples_.clear();
   localisation_rows_.clear();
+  shoulder_rows_.clear();
   Extremes extremes;
   MpmRunCallbacks callbacks;
   callbacks.record_row = [&] { record_row(history, extremes); };
@@ -233,6 +286,7 @@ void PenetrometerJob::run(RunContext& context) {
       columns.extra.emplace_back("band_angle_deg", std::move(map.band_angle_deg));
     }
     for (auto& column : micropolar_columns(s.micropolar)) columns.extra.push_back(std::move(column));
+    for (auto& column : pore_fluid_columns(s)) columns.extra.push_back(std::move(column));
     fields.write(s.particles, s.time_s, columns);
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
     write_pressure_map(*run_, name_, plots);
@@ -242,7 +296,8 @@ void PenetrometerJob::run(RunContext& context) {
   context.steps = result.steps;
   history.write(context.out_dir / "history.csv");
   if (!cpt() && weight_N() > 0.0)
-    write_simulated_record(samples_, scene_.model, run_->penetrometer_mass_kg(), name_, context.out_dir, plots);
+    write_simulated_record(samples_, scene_.model, run_->penetrometer_mass_kg(), name_, context.out_dir, plots,
+                           shoulder_rows_);
   fields.finish();
   write_summary(context.summary, result, extremes, fields.size());
   write_plots(plots);
@@ -310,6 +365,7 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
     sum["localised_time_s"] = e.localised_time_s;
     sum["localised_fraction_min_yielding"] = mpm::minimum_yielding_for_share(ffp.soil_particles());
   }
+  if (saturated()) write_pore_pressure_summary(sum, e);
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;
   sum["penetrometer"] = ffp.deformable() ? "linear_elastic" : "rigid";
@@ -341,6 +397,30 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
   sum["field_files"] = field_files;
 }
 
+void PenetrometerJob::write_pore_pressure_summary(json& sum, const Extremes& e) const {
+  const ShoulderPressureFigures u2 = shoulder_pressure_figures(shoulder_rows_);
+  sum["u1_max_kPa"] = e.u1_max_kPa;  // at the history rows, as every u figure
+  sum["u1_min_kPa"] = e.u1_min_kPa;
+  sum["u2_peak_kPa"] = u2.peak_kPa;
+  sum["u2_time_of_peak_s"] = u2.time_of_peak_s;
+  sum["u2_min_kPa"] = u2.min_kPa;
+  sum["u2_time_of_min_s"] = u2.time_of_min_s;
+  sum["rest_time_s"] = u2.rest_time_s ? json(*u2.rest_time_s) : json(nullptr);
+  sum["u2_excess_at_rest_kPa"] = u2.excess_at_rest_kPa;
+  sum["u2_dissipation_time_s"] = u2.dissipation_time_s ? json(*u2.dissipation_time_s) : json(nullptr);
+  if (!u2.dissipation_time_s) sum["u2_dissipation_note"] = u2.dissipation_note;
+  // At the start, as dt_s.
+  const TwoPhaseStep& step = *initial_two_phase_step_;
+  sum["two_phase_dt_limit_s"] = step.limit_s;
+  sum["time_step_limited_by"] = step.limit_s < initial_cfl_s_
+                                    ? (step.bounds.drag_limited() ? "two-phase: drag" : "two-phase: undrained wave")
+                                    : "CFL of the skeleton";
+  // Particles whose porosity was held at the closed-pore floor (mpm/two_phase.hpp), the most at one step.
+  sum["closed_pore_particles_max"] = run_->simulation().two_phase->closed_pores_max;
+  sum["water_depth_m"] = scene_.model.soil.water_depth_m;
+  sum["buoyancy_final_N"] = run_->state().buoyancy_N;
+}
+
 void PenetrometerJob::write_plots(const fs::path& plots) const {
   if (cpt() && scene_.bearing) {
     const BearingPlateau& b = *scene_.bearing;
@@ -354,6 +434,7 @@ void PenetrometerJob::write_plots(const fs::path& plots) const {
     write_ffp_plots(samples_, name_, plots);
   }
   if (scene_.output.localisation) write_localisation_plot(localisation_rows_, name_, plots);
+  if (saturated()) write_pore_pressure_plot(shoulder_rows_, name_, plots);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include "drivers/app/record_output.hpp"
@@ -211,7 +212,8 @@ void write_pressure_settlement_plot(std::span<const FfpSample> samples, const st
 }
 
 void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
-                            const std::string& name, const fs::path& out_dir, const fs::path& plots) {
+                            const std::string& name, const fs::path& out_dir, const fs::path& plots,
+                            std::span<const ShoulderPressureRow> u2) {
   RecordSettings settings;
   settings.mass_kg = mass_kg;
   settings.gravity_m_s2 = model.gravity_m_s2;
@@ -219,10 +221,42 @@ void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDe
   settings.impact_velocity_m_s = -model.velocity_m_s;
   settings.impact_time_s = 0.0;
   settings.rate_laws = default_rate_laws();
+  if (model.soil.saturated && model.soil.water_depth_m >= model.shape.total_length_m()) {
+    // Under water from the start: the record kind's water drop, whose q_dyn leaves out the buoyancy
+    // ρ_w g V that the run's deceleration holds (the drag: none, the run starts at the impact).
+    settings.medium = DropMedium::water;
+    settings.fluid_density_kg_m3 = model.soil.fluid.density_kg_m3;
+    settings.volume_m3 = model.shape.volume_m3();
+  }
   const InterpretedRecord record =
       interpret_record(column(samples, &FfpSample::time_s), column(samples, &FfpSample::deceleration_g), settings);
-  record_table(record, settings).write(out_dir / "record.csv");
+  std::vector<std::pair<std::string, std::vector<double>>> extra;
+  if (!u2.empty()) {
+    // The record's rows are the samples after the impact's (as the record kind cuts a measured one).
+    std::vector<double> u;
+    for (std::size_t k = record.impact_index + 1; k < u2.size(); ++k) u.push_back(u2[k].u2_kPa);
+    if (u.size() != record.time_s.size()) throw std::logic_error("record.csv: u2 and the record's rows differ");
+    extra.push_back({"pore_pressure_kPa", std::move(u)});
+  }
+  record_table(record, settings, extra).write(out_dir / "record.csv");
   write_record_plots(record, settings, name, plots / "record_profiles.png");
+}
+
+void write_pore_pressure_plot(std::span<const ShoulderPressureRow> rows, const std::string& name,
+                              const fs::path& plots) {
+  std::vector<double> t, u2, hydrostatic, excess;
+  for (const ShoulderPressureRow& r : rows) {
+    t.push_back(r.time_s);
+    u2.push_back(r.u2_kPa);
+    hydrostatic.push_back(r.u2_kPa - r.u2_excess_kPa);
+    excess.push_back(r.u2_excess_kPa);
+  }
+  Plot pressure = line_plot(t, u2, "time (s)", "pore pressure (kPa)", name + ": shoulder pore pressure u2", "u2");
+  pressure.series.push_back({t, hydrostatic, "hydrostatic at u2"});
+  pressure.key_position = "top right";
+  write_png_stack(
+      {pressure, line_plot(t, excess, "time (s)", "excess (kPa)", "u2's excess over hydrostatic", "excess")},
+      plots / "pore_pressure.png");
 }
 
 }  // namespace ffp

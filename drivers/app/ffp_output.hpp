@@ -7,6 +7,7 @@
 #include <string>
 
 #include "drivers/app/ffp_summary.hpp"
+#include "drivers/app/pore_pressure_summary.hpp"
 #include "mpm/ffp_model.hpp"
 #include "mpm/localisation_map.hpp"
 
@@ -58,9 +59,15 @@ void write_pressure_settlement_plot(std::span<const FfpSample> samples, const st
 /// The run's deceleration read as a measured record would be (the `record` kind's
 /// interpretation): out_dir/record.csv and plots/record_profiles.png, so a simulation
 /// and a drop compare column for column.
-/// Impact at t = 0 with the scene's impact velocity.
+/// Impact at t = 0 with the scene's impact velocity. On a saturated sand (`u2` one row per
+/// sample, else empty) record.csv's pore_pressure_kPa is u2, as a BlueDrop's shoulder sensor reads.
 void write_simulated_record(std::span<const FfpSample> samples, const mpm::FfpDescription& model, double mass_kg,
                             const std::string& name, const std::filesystem::path& out_dir,
-                            const std::filesystem::path& plots);
+                            const std::filesystem::path& plots, std::span<const ShoulderPressureRow> u2 = {});
+
+/// Saturated sand: u2, its hydrostatic part (u2 − excess) and the excess against time,
+/// plots/pore_pressure.png.
+void write_pore_pressure_plot(std::span<const ShoulderPressureRow> rows, const std::string& name,
+                              const std::filesystem::path& plots);
 
 }  // namespace ffp

@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "drivers/app/mpm_scene.hpp"
+#include "drivers/app/pore_fluid_scene.hpp"
 #include "drivers/scene/material_scene.hpp"
 #include "models/math_constants.hpp"
 
@@ -73,9 +74,18 @@ double read_soil(SceneReader& scene, mpm::FfpDescription& d) {
                   Doc("a particle whose density falls below this fraction of its initial one has lost grain contact: "
                       "no stress, its volume held (Dunatunga & Kamrin 2015; 0: off) "
                       "([theory](../theory.md#disconnection))"));
+  d.soil.saturated = read_saturation(soil);
+  const ChamberDrainage drainage = read_chamber_drainage(soil, d.soil.saturated.has_value());
+  d.soil.wall_drainage = drainage.wall;
+  d.soil.base_drainage = drainage.base;
+  if (d.soil.saturated && d.soil.walls == mpm::ChamberWalls::absorbing)
+    soil.fail("walls", "a saturated sand takes rigid walls (the pore water has no absorbing boundary)");
   soil.finish(
       "soil (depth_m, radius_m, walls, k0, particles_per_cell_near or near_spacing_m, particles_per_cell_far, "
-      "near_radius_m, near_depth_m, disconnected_density_ratio)");
+      "near_radius_m, near_depth_m, disconnected_density_ratio, saturated, porosity, permeability_m_s, "
+      "permeability_law, drainage)");
+  d.soil.fluid = read_pore_fluid(scene, d.soil.saturated.has_value(),
+                                 d.soil.saturated ? &d.soil.water_depth_m : nullptr, "soil.saturated");
   return cohesion_Pa;
 }
 
@@ -122,6 +132,9 @@ double read_penetrometer(SceneReader& scene, mpm::FfpDescription& d, Penetromete
                    Doc("its speed at t = 0, when the tip touches the sand surface"));
   d.velocity_m_s = -speed;
   if (f.has("deformable")) {
+    if (d.soil.saturated)
+      f.fail("deformable",
+             "a saturated sand takes a rigid penetrometer (the pore water's contact is the rigid body's)");
     for (const char* key : {"rigid_body_force", "external_force_N"})
       if (f.has(key)) f.fail(key, "applies to a rigid penetrometer only (this one is deformable)");
     SceneReader e = f.object("deformable", Doc("a linear elastic penetrometer instead of the rigid body; its density "
@@ -177,6 +190,8 @@ void read_contact(SceneReader& scene, mpm::FfpDescription& d) {
                            "([theory](../theory.md#contact-surface))"));
   if (d.surface == mpm::ContactSurface::particles) {
     if (d.deformable) c.fail("surface", "particles applies to a rigid penetrometer only (this one is deformable)");
+    if (d.soil.saturated)
+      c.fail("surface", "a saturated sand takes the contact on the nodes (the pore water's is nodal)");
     if (d.force != mpm::RigidBodyForce::contact_impulse)
       c.fail("surface", "particles exchanges impulses: it needs rigid_body_force contact_impulse");
     // The nodes' settings mean nothing to it: refused rather than silently ignored.

@@ -69,20 +69,6 @@ HistoryQuantity resolve_quantity(const std::string& q, const std::vector<std::st
   return {diagnostic_named(q), std::nullopt};
 }
 
-/// A saturated model's particle fields besides the effective stress: the pore pressure p (gauge),
-/// its excess over hydrostatic (kPa) and the porosity. None for a dry model.
-std::vector<std::pair<std::string, std::vector<double>>> pore_fluid_fields(const mpm::Simulation& s) {
-  if (!s.two_phase) return {};
-  const mpm::TwoPhase& t = *s.two_phase;
-  const std::size_t n = s.particles.size();
-  std::vector<double> pressure(n), excess(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    pressure[p] = 1e-3 * t.pore_pressure[p];
-    excess[p] = 1e-3 * t.excess_pressure(s.particles, p);
-  }
-  return {{"pore_pressure_kPa", pressure}, {"excess_pore_pressure_kPa", excess}, {"porosity", t.porosity}};
-}
-
 class MpmJob : public Job {
  public:
   MpmJob(MpmScene scene, std::string name)
@@ -206,7 +192,7 @@ void MpmJob::run(RunContext& context) {
   };
   callbacks.write_fields = [&] {
     std::vector<std::pair<std::string, std::vector<double>>> extra = micropolar_columns(s.micropolar);
-    for (auto& column : pore_fluid_fields(s)) extra.push_back(std::move(column));
+    for (auto& column : pore_fluid_columns(s)) extra.push_back(std::move(column));
     fields.write(s.particles, s.time_s, {.stress_components = true, .extra = std::move(extra)});
   };
   const mpm::Diagnostics initial = mpm::measure(s);

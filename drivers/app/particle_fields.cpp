@@ -66,6 +66,18 @@ std::vector<std::pair<std::string, std::vector<double>>> micropolar_columns(cons
           {"couple_stress_N_m", couple}};
 }
 
+std::vector<std::pair<std::string, std::vector<double>>> pore_fluid_columns(const mpm::Simulation& s) {
+  if (!s.two_phase) return {};
+  const mpm::TwoPhase& t = *s.two_phase;
+  const std::size_t n = s.particles.size();
+  std::vector<double> pressure(n), excess(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    pressure[p] = 1e-3 * t.pore_pressure[p];
+    excess[p] = 1e-3 * t.excess_pressure(s.particles, p);
+  }
+  return {{"pore_pressure_kPa", pressure}, {"excess_pore_pressure_kPa", excess}, {"porosity", t.porosity}};
+}
+
 void ParticleFieldSeries::finish() const {
   if (pvd_.size() > 0) pvd_.write(dir_ / "particles.pvd");
 }

@@ -13,6 +13,7 @@
 #include "drivers/output/vtu_writer.hpp"
 #include "mpm/micropolar.hpp"
 #include "mpm/particles.hpp"
+#include "mpm/simulation.hpp"
 
 namespace ffp {
 
@@ -27,6 +28,10 @@ struct ParticleFieldColumns {
 /// relative rotation ω_M − ω (rad), the skew stress s (kPa) and the couple stresses' magnitude
 /// |m| (N/m) (docs/theory.md#micropolar).
 std::vector<std::pair<std::string, std::vector<double>>> micropolar_columns(const mpm::MicropolarFields& fields);
+
+/// A saturated model's columns besides the effective stress (none for a dry one): the pore
+/// pressure p (gauge), its excess over hydrostatic (kPa) and the porosity.
+std::vector<std::pair<std::string, std::vector<double>>> pore_fluid_columns(const mpm::Simulation& simulation);
 
 /// The numbered field files of one run and their .pvd index.
 class ParticleFieldSeries {

@@ -10,6 +10,7 @@ namespace {
 constexpr double kMaxFluidBulkModulus_kPa = 1e8;  // 100 GPa: stiffer than any pore fluid
 constexpr double kMaxFluidDensity = 30000.0;      // as a material's
 constexpr double kMaxPermeability_m_s = 1.0;      // clean gravel
+constexpr double kMaxWaterDepth_m = 11000.0;      // the deepest ocean
 
 constexpr double kMaxExcessPressure_kPa = 1e6;  // 1 GPa: beyond any soil's
 
@@ -54,14 +55,15 @@ std::optional<mpm::SaturatedSoil> read_saturation(SceneReader& body) {
   return soil;
 }
 
-mpm::PoreFluid read_pore_fluid(SceneReader& scene, bool saturated) {
+mpm::PoreFluid read_pore_fluid(SceneReader& scene, bool saturated, double* water_depth_m,
+                               const std::string& saturated_key) {
   const Doc doc = Doc("the pore fluid of the saturated bodies")
                       .by_default("water at 20 °C")
                       .within("object")
                       .only_with("a saturated body");
   mpm::PoreFluid fluid;
   if (!saturated) {
-    if (scene.has("fluid")) scene.fail("fluid", "only with a saturated body (bodies[i].saturated: true)");
+    if (scene.has("fluid")) scene.fail("fluid", "only with a saturated body (" + saturated_key + ": true)");
     scene.allow("fluid", doc);
     return fluid;
   }
@@ -70,8 +72,40 @@ mpm::PoreFluid read_pore_fluid(SceneReader& scene, bool saturated) {
                                          1e-3 * fluid.bulk_modulus_Pa, Doc("the fluid's bulk modulus K_w"));
   fluid.density_kg_m3 = f.number("density_kg_m3", Range::positive(kMaxFluidDensity, "kg/m³"), fluid.density_kg_m3,
                                  Doc("the fluid's density ρ_w"));
+  if (water_depth_m != nullptr) {
+    *water_depth_m = f.number(
+        "water_depth_m", Range::non_negative(kMaxWaterDepth_m, "m"), 0.0,
+        Doc("free water above the sand surface: the water table this high above it, so the surface carries "
+            "ρ_w g × depth (drained: no excess there) and the penetrometer below the water's surface is buoyed; the "
+            "water above is no medium of the model (no drag, no added mass) "
+            "([theory](../theory.md#saturated-penetrometer))"));
+    f.finish("fluid (bulk_modulus_kPa, density_kg_m3, water_depth_m)");
+    return fluid;
+  }
   f.finish("fluid (bulk_modulus_kPa, density_kg_m3)");
   return fluid;
+}
+
+ChamberDrainage read_chamber_drainage(SceneReader& soil, bool saturated) {
+  const Doc doc = Doc("whether the pore water may leave through the chamber's wall and base (the sand's surface is "
+                      "always drained) ([theory](../theory.md#saturated))")
+                      .by_default("impermeable wall and base")
+                      .within("object")
+                      .only_with("soil.saturated: true");
+  ChamberDrainage out;
+  if (!saturated) {
+    if (soil.has("drainage")) soil.fail("drainage", "only with a saturated sand (soil.saturated: true)");
+    soil.allow("drainage", doc);
+    return out;
+  }
+  SceneReader d = soil.object("drainage", doc);
+  const std::string wall =
+      ": impermeable (the pore water's normal velocity is zero there) or drained (no excess "
+      "pore pressure)";
+  out.wall = d.choice("wall", mpm::kDrainageNames, mpm::Drainage::impermeable, Doc("the lateral wall" + wall));
+  out.base = d.choice("base", mpm::kDrainageNames, mpm::Drainage::impermeable, Doc("the base" + wall));
+  d.finish("drainage (wall, base)");
+  return out;
 }
 
 mpm::DrainageConditions read_drainage(SceneReader& boundaries, const mpm::BoundaryConditions& fixities, bool axis,
