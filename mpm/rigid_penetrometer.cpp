@@ -258,13 +258,18 @@ void RigidPenetrometer::apply_contact(Simulation& s) {
     v = v0 + dt * (-g + (reaction + settings_.external_force_N + buoyancy) / M);  // eqs. 1 and 3
     correct_soil(s, v);
   }
-  // The buoyancy is part of what the surroundings exert: in the reaction, as an accelerometer reads it.
-  reaction += buoyancy;
-  state_.buoyancy_N = buoyancy;
-  state_.buoyancy_impulse_N_s += buoyancy * dt;
   state_.velocity_m_s = v;
   state_.reaction_N = reaction;
   state_.impulse_N_s += reaction * dt;
+  // The buoyancy is part of what the surroundings exert: in the reaction, as an accelerometer reads
+  // it. Added apart and only where there is water: a dry run's impulse then rounds as it always did
+  // (reaction · Δt shared with the body's update, not fused into the sum).
+  if (buoyancy != 0.0) {
+    state_.reaction_N += buoyancy;
+    state_.impulse_N_s += buoyancy * dt;
+  }
+  state_.buoyancy_N = buoyancy;
+  state_.buoyancy_impulse_N_s += buoyancy * dt;
   state_.contact_nodes = exchange_.corrected;
 }
 
