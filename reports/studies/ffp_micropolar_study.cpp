@@ -60,7 +60,8 @@ void write_drop_section(const StudyResults& results, double band_per_length, Stu
       "data/scenes/ffp_micropolar.json (the same MC law on the symmetric stress, plus a micro-rotation with "
       "ℓ = " +
       fixed(1e3 * length_m, 1) +
-      " mm, G_c = G/2, j = ℓ²/10, skew and couple stresses held at the sand's friction), both at the paper's 1 cm, with output.localisation. The micropolar sand's "
+      " mm, G_c = G/2, j = ℓ²/10, skew and couple stresses held at the sand's friction), both at the paper's 1 cm, "
+      "with output.localisation. The micropolar sand's "
       "time step is the grain's rotational inertia's: " +
       scientific(figure(results, kMicropolarSand, "dt_s")) + " s against " +
       scientific(figure(results, kPaperSand, "dt_s")) + " s at the start.");
