@@ -18,19 +18,10 @@ namespace ffp {
 
 namespace {
 
-/// The history row nearest `time_s` (the rows are 0.2 ms apart).
-std::size_t row_at(const CsvData& history, double time_s) {
-  const auto& t = history.column("time_s");
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < t.size(); ++k)
-    if (std::abs(t[k] - time_s) < std::abs(t[best] - time_s)) best = k;
-  return best;
-}
-
 /// "59 % of the 4285 particles on a face or an edge (279 of 2008 on a face, 2277 of 2277 on an
 /// edge; 238 more at the apex)" at the row nearest `time_s`.
 std::string share_at(const CsvData& history, double time_s) {
-  const std::size_t k = row_at(history, time_s);
+  const std::size_t k = history_row_at(history, time_s);
   auto at = [&](const char* column) { return history.column(column)[k]; };
   const double face = at("yield_face_particles"), edge = at("yield_edge_particles");
   return fixed(100 * at("localised_fraction"), 0) + " % of the " + fixed(face + edge, 0) +

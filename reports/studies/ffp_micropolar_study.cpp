@@ -17,18 +17,9 @@ namespace {
 
 constexpr std::size_t kPaperSand = 0, kMicropolarSand = 1;
 
-/// The history row nearest `time_s`.
-std::size_t row_at(const CsvData& history, double time_s) {
-  const auto& t = history.column("time_s");
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < t.size(); ++k)
-    if (std::abs(t[k] - time_s) < std::abs(t[best] - time_s)) best = k;
-  return best;
-}
-
 /// "31 % of 4285 yielding particles" at the row nearest `time_s`.
-std::string share_at(const CsvData& history, double time_s) {
-  const std::size_t k = row_at(history, time_s);
+std::string localised_share_at(const CsvData& history, double time_s) {
+  const std::size_t k = history_row_at(history, time_s);
   const double yielding = history.column("yield_face_particles")[k] + history.column("yield_edge_particles")[k];
   return fixed(100 * history.column("localised_fraction")[k], 0) + " % of " + fixed(yielding, 0);
 }
@@ -39,9 +30,9 @@ std::string localisation_words(const StudyResults& results, std::size_t run, con
   if (!history.has("localised_fraction")) return sand + ": no localisation columns (the run failed).";
   return sand + ": localised_fraction_max = " + fixed(figure(results, run, "localised_fraction_max"), 3) + " at " +
          fixed(1000 * figure(results, run, "localised_time_s"), 1) + " ms (" +
-         share_at(history, figure(results, run, "localised_time_s")) + " yielding particles, at least " +
-         fixed(figure(results, run, "localised_fraction_min_yielding"), 0) + " counted); " + share_at(history, 0.04) +
-         " at 40 ms and " + share_at(history, 0.06) + " at 60 ms.";
+         localised_share_at(history, figure(results, run, "localised_time_s")) + " yielding particles, at least " +
+         fixed(figure(results, run, "localised_fraction_min_yielding"), 0) + " counted); " +
+         localised_share_at(history, 0.04) + " at 40 ms and " + localised_share_at(history, 0.06) + " at 60 ms.";
 }
 
 /// The micropolar scene's ℓ, from its echoed scene.

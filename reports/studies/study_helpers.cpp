@@ -22,6 +22,14 @@ bool include_run_figure(const StudyResults& results, std::size_t run, const std:
   return true;
 }
 
+std::size_t history_row_at(const CsvData& history, double time_s) {
+  const auto& t = history.column("time_s");
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < t.size(); ++k)
+    if (std::abs(t[k] - time_s) < std::abs(t[best] - time_s)) best = k;
+  return best;
+}
+
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
   if (x.size() < 2 || at < x.front() || at > x.back()) return std::nan("");
   const auto upper = std::upper_bound(x.begin(), x.end(), at);

@@ -34,6 +34,9 @@ RunRequest reference_drop_run(const std::filesystem::path& scenes_dir, const std
 /// shorter than the classical one).
 RunRequest micropolar_drop_run(const std::filesystem::path& scenes_dir, const std::string& label);
 
+/// The history row whose time_s is nearest `time_s`.
+std::size_t history_row_at(const CsvData& history, double time_s);
+
 /// Linear interpolation of y(x) on a table sorted by x (NaN outside).
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
 
