@@ -11,6 +11,7 @@ std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir) {
   studies.push_back(integration_error_study(scenes_dir));
   studies.push_back(punch_bearing_study(scenes_dir));  // verification before the comparison with the paper
   studies.push_back(saturated_verification_study(scenes_dir));
+  studies.push_back(saturated_drop_study(scenes_dir));  // outside the main job
   studies.push_back(ffp_paper_comparison_study(scenes_dir));
   studies.push_back(ffp_localisation_study(scenes_dir));
   studies.push_back(ffp_sands_side_by_side_study(scenes_dir));

@@ -24,6 +24,18 @@ StudyResults StudyResults::extended(const std::vector<RunRequest>& requests,
   return more;
 }
 
+std::vector<std::string> select_studies(std::vector<Study>& studies, const std::string& only) {
+  std::vector<std::string> left_out;
+  if (!only.empty()) {
+    std::erase_if(studies, [&](const Study& s) { return s.title.find(only) == std::string::npos; });
+    return left_out;
+  }
+  for (const Study& s : studies)
+    if (s.outside_main_job) left_out.push_back(s.title);
+  std::erase_if(studies, [](const Study& s) { return s.outside_main_job; });
+  return left_out;
+}
+
 double StudyResults::total_wall_time_s() const {
   double total = 0.0;
   for (std::size_t i = 0; i < size(); ++i) total += summary(i).value("wall_time_s", 0.0);

@@ -53,9 +53,16 @@ struct Study {
   /// those of `runs` in what `write` sees. Empty: none.
   std::function<std::vector<RunRequest>(const StudyResults&)> follow_up;
   std::function<void(const StudyResults&, StudyOutput&)> write;
+  /// Too long for the main job: run only when `ffp report --only` names it; the report lists it
+  /// with that command otherwise.
+  bool outside_main_job = false;
 };
 
 /// Every study of the validation report, reading scenes from `scenes_dir`.
 std::vector<Study> validation_studies(const std::filesystem::path& scenes_dir);
+
+/// Keeps the studies whose title contains `only`, or with `only` empty those of the main job.
+/// Returns the titles of the studies left out for being outside the main job (none with `only`).
+std::vector<std::string> select_studies(std::vector<Study>& studies, const std::string& only);
 
 }  // namespace ffp

@@ -44,6 +44,7 @@
 #include "drivers/app/pore_pressure_summary.hpp"
 #include "drivers/output/csv_writer.hpp"
 #include "models/math_constants.hpp"
+#include "models/voigt.hpp"
 #include "mpm/cone_pore_pressure.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/localisation_map.hpp"
@@ -60,6 +61,24 @@ std::vector<double> plastic_deviatoric_strain(const mpm::Simulation& s) {
   std::vector<double> ep(s.particles.size(), 0.0);
   s.groups[0].state_output(StateOutput::plastic_deviatoric_strain, s.particles.stress, ep);  // 0 where the law has none
   return ep;
+}
+
+/// The largest radius of a soil particle whose plastic deviatoric strain is at least `threshold`:
+/// how far the sheared zone reaches from the axis (a local failure keeps it within a few body
+/// radii, a general one spreads it towards the wall). 0 where nothing has sheared that far.
+/// The deviatoric strain that counts a particle as sheared: 5 %, past what the loose sand's
+/// stiffness carries elastically away from the cone (q/3G ≈ 1 % at q = 30 kPa).
+constexpr double kShearedZoneStrain = 0.05;
+
+/// The largest radius of a soil particle whose deviatoric strain is at least `threshold`: how far
+/// the sheared zone reaches from the axis (a local failure keeps it within a few body radii, a
+/// general one spreads it towards the wall). 0 where nothing has sheared that far.
+double sheared_zone_radius_m(const mpm::Simulation& s, double threshold) {
+  const mpm::MaterialGroup& soil = s.groups[0];
+  double reach = 0.0;
+  for (std::size_t i = soil.begin; i < soil.end; ++i)
+    if (deviatoric_strain(s.particles.strain[i]) >= threshold) reach = std::max(reach, s.particles.r[i]);
+  return reach;
 }
 
 /// Extremes over every step, and over the history rows, that the samples alone do not hold.
@@ -290,6 +309,7 @@ void PenetrometerJob::run(RunContext& context) {
     fields.write(s.particles, s.time_s, columns);
     write_strain_map(*run_, name_, scene_.output.strain_colour_max, plots);
     write_pressure_map(*run_, name_, plots);
+    if (saturated()) write_excess_pore_pressure_map(*run_, name_, plots);
   };
   const MpmOutputTimes times{scene_.end_time_s, scene_.output.history_interval_s, scene_.output.field_times_s};
   const MpmRunResult result = run_mpm(s, times, callbacks, cpt() ? "cpt" : "ffp", name_, context.show_progress);
@@ -365,6 +385,8 @@ void PenetrometerJob::write_summary(json& sum, const MpmRunResult& result, const
     sum["localised_time_s"] = e.localised_time_s;
     sum["localised_fraction_min_yielding"] = mpm::minimum_yielding_for_share(ffp.soil_particles());
   }
+  sum["sheared_zone_radius_m"] = sheared_zone_radius_m(s, kShearedZoneStrain);  // at the end
+  sum["sheared_zone_strain"] = kShearedZoneStrain;
   if (saturated()) write_pore_pressure_summary(sum, e);
   sum["grid_nodes"] = {s.grid.r.nodes(), s.grid.z.nodes()};
   sum["min_cell_m"] = h;

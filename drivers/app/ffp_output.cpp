@@ -1,6 +1,7 @@
 #include "drivers/app/ffp_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
@@ -56,7 +57,7 @@ struct Categories {
 };
 void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std::string& colour_label,
                     std::vector<double> values, double colour_max, const fs::path& png,
-                    const Categories* categories = nullptr) {
+                    const Categories* categories = nullptr, double colour_min = 0.0) {
   const mpm::Simulation& s = run.simulation();
   const mpm::Particles& P = s.particles;
   const mpm::MaterialGroup& soil = s.groups[0];
@@ -73,7 +74,7 @@ void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std:
   double z_top = 0.0;
   for (double z : map.y) z_top = std::max(z_top, z);
   map.overlays.push_back(outline(run, z_top + 0.05));
-  map.colour_min = 0.0;
+  map.colour_min = colour_min;
   map.colour_max = colour_max;
   map.point_size = 0.3;
   if (categories != nullptr) map.palette = categories->palette, map.colour_tics = categories->tics;
@@ -120,6 +121,28 @@ void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const f
   }
   write_soil_map(run, map_title(run, name, "mean stress p"), "p (kPa)", std::move(p_kPa), top > 0.0 ? top : 1.0,
                  plots / map_file("mean_stress", s.time_s));
+}
+
+void write_excess_pore_pressure_map(const mpm::FfpRun& run, const std::string& name, const fs::path& plots) {
+  const mpm::Simulation& s = run.simulation();
+  const mpm::MaterialGroup& soil = s.groups[0];
+  std::vector<double> excess_kPa;
+  for (std::size_t i = soil.begin; i < soil.end; ++i)
+    excess_kPa.push_back(1e-3 * s.two_phase->excess_pressure(s.particles, i));
+  // A scale symmetric about 0 (suction blue, excess red) up to the 98th percentile of |p_e|, as the
+  // mean stress map: the particles at the tip would take the whole scale.
+  std::vector<double> size;
+  for (const double e : excess_kPa) size.push_back(std::abs(e));
+  double top = 0.0;
+  if (!size.empty()) {
+    const auto k = static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(size.size() - 1));
+    std::nth_element(size.begin(), size.begin() + k, size.end());
+    top = size[static_cast<std::size_t>(k)];
+  }
+  if (!(top > 0.0)) top = 1.0;
+  const Categories diverging{"defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')", ""};
+  write_soil_map(run, map_title(run, name, "excess pore pressure"), "p_e (kPa)", std::move(excess_kPa), top,
+                 plots / map_file("excess_pore_pressure", s.time_s), &diverging, -top);
 }
 
 void write_localisation_map(const mpm::FfpRun& run, const std::string& name, const mpm::LocalisationMap& map,

@@ -23,6 +23,11 @@ void write_strain_map(const mpm::FfpRun& run, const std::string& name, double co
 /// pattern of the pressure around the cone (the bands docs/verification.md#mesh-convergence describes).
 void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const std::filesystem::path& plots);
 
+/// A saturated sand's excess pore pressure p − p_h (kPa), plots/excess_pore_pressure_tT.TTT.png,
+/// coloured on a scale symmetric about 0 up to the 98th percentile of |p − p_h|.
+void write_excess_pore_pressure_map(const mpm::FfpRun& run, const std::string& name,
+                                    const std::filesystem::path& plots);
+
 /// With output.localisation: the soil's particles by where their stress sits (inside the
 /// yield surface, on a face or an edge and elliptic, at the apex and not evaluated,
 /// localised) with the outline, plots/localisation_tT.TTT.png.

@@ -58,10 +58,8 @@ int command_report(const ReportOptions& options) {
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<Study> studies = validation_studies(scenes);
-    if (!only.empty()) {
-      std::erase_if(studies, [&](const Study& s) { return s.title.find(only) == std::string::npos; });
-      if (studies.empty()) throw SceneError("--only: no study title contains '" + only + "'");
-    }
+    const std::vector<std::string> left_out = select_studies(studies, only);
+    if (studies.empty()) throw SceneError("--only: no study title contains '" + only + "'");
     // Every study's own runs, and the runs that need their results (a study's
     // follow-up), made as soon as that study's runs are done, while the others run.
     std::vector<RunRequest> all;
@@ -138,6 +136,12 @@ int command_report(const ReportOptions& options) {
             "summary): " +
             std::string(e.what()));
       }
+    }
+
+    for (const std::string& title : left_out) {
+      document.heading(2, title);
+      document.paragraph("Not run in this report: its runs take too long for the main job. Run it with `ffp report "
+                         "--only \"" + title + "\"`.");
     }
 
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

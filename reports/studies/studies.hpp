@@ -23,6 +23,7 @@ Study ffp_sands_side_by_side_study(const std::filesystem::path& scenes_dir);
 Study ffp_chamber_study(const std::filesystem::path& scenes_dir);
 Study punch_bearing_study(const std::filesystem::path& scenes_dir);
 Study saturated_verification_study(const std::filesystem::path& scenes_dir);
+Study saturated_drop_study(const std::filesystem::path& scenes_dir);
 Study inverse_study(const std::filesystem::path& scenes_dir);
 
 }  // namespace ffp
