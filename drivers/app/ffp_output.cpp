@@ -81,6 +81,14 @@ void write_soil_map(const mpm::FfpRun& run, const std::string& title, const std:
   write_png(map, png);
 }
 
+/// The 98th percentile of `values` (0 when empty).
+double percentile_98(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  return values[static_cast<std::size_t>(k)];
+}
+
 std::string map_title(const mpm::FfpRun& run, const std::string& name, const char* what) {
   char title[160];
   std::snprintf(title, sizeof title, "%s: %s at t = %.3f s (penetration %.3f m)", name.c_str(), what,
@@ -112,13 +120,7 @@ void write_pressure_map(const mpm::FfpRun& run, const std::string& name, const f
   for (std::size_t i = soil.begin; i < soil.end; ++i) p_kPa.push_back(1e-3 * mean_pressure(s.particles.stress[i]));
   // Colours up to the 98th percentile: the few particles at the tip would otherwise take the
   // whole scale and hide the pattern of the rest.
-  std::vector<double> sorted = p_kPa;
-  double top = 0.0;
-  if (!sorted.empty()) {
-    const auto k = static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(sorted.size() - 1));
-    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
-    top = sorted[static_cast<std::size_t>(k)];
-  }
+  const double top = percentile_98(p_kPa);
   write_soil_map(run, map_title(run, name, "mean stress p"), "p (kPa)", std::move(p_kPa), top > 0.0 ? top : 1.0,
                  plots / map_file("mean_stress", s.time_s));
 }
@@ -133,12 +135,7 @@ void write_excess_pore_pressure_map(const mpm::FfpRun& run, const std::string& n
   // mean stress map: the particles at the tip would take the whole scale.
   std::vector<double> size;
   for (const double e : excess_kPa) size.push_back(std::abs(e));
-  double top = 0.0;
-  if (!size.empty()) {
-    const auto k = static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(size.size() - 1));
-    std::nth_element(size.begin(), size.begin() + k, size.end());
-    top = size[static_cast<std::size_t>(k)];
-  }
+  double top = percentile_98(std::move(size));
   if (!(top > 0.0)) top = 1.0;
   const Categories diverging{"defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')", ""};
   write_soil_map(run, map_title(run, name, "excess pore pressure"), "p_e (kPa)", std::move(excess_kPa), top,
