@@ -41,19 +41,21 @@ NodalField& solid_field(Simulation& s) {
 
 bool smoothed(const Simulation& s) { return s.settings.strain_smoothing != StrainSmoothing::off; }
 
+/// The particle's (cell, body) slot of cell_sums.
+std::size_t cell_slot(const Simulation& s, std::size_t p) { return s.cell[p] * s.bodies.size() + s.particles.body[p]; }
+
 /// Per (cell, body) slot of the particles that take part in the cell means (as the solid's,
 /// mpm/stages.hpp): Σ V_p and Σ V_p x_p, in particle order.
 template <class Value>
 void cell_sums(const Simulation& s, std::vector<double>& volume, std::vector<double>& sum, Value&& x) {
   const Particles& P = s.particles;
   const TwoPhase& t = *s.two_phase;
-  const std::size_t bodies = s.bodies.size();
   const std::vector<double> limit = cell_mean_density_limits(s);
-  volume.assign(s.grid.cells() * bodies, 0.0);
-  sum.assign(s.grid.cells() * bodies, 0.0);
+  volume.assign(s.grid.cells() * s.bodies.size(), 0.0);
+  sum.assign(s.grid.cells() * s.bodies.size(), 0.0);
   for (std::size_t p = 0; p < P.size(); ++p) {
     if (!t.saturated(P, p) || !takes_part_in_cell_means(P, p, limit)) continue;
-    const std::size_t k = s.cell[p] * bodies + P.body[p];
+    const std::size_t k = cell_slot(s, p);
     volume[k] += P.volume[p];
     sum[k] += P.volume[p] * x(p);
   }
@@ -63,7 +65,7 @@ void cell_sums(const Simulation& s, std::vector<double>& volume, std::vector<dou
 double cell_mean_or_own(const Simulation& s, std::size_t p, const std::vector<double>& volume,
                         const std::vector<double>& sum, const std::vector<double>& limit, double own) {
   if (!smoothed(s) || !takes_part_in_cell_means(s.particles, p, limit)) return own;
-  const std::size_t k = s.cell[p] * s.bodies.size() + s.particles.body[p];
+  const std::size_t k = cell_slot(s, p);
   return sum[k] / volume[k];
 }
 
@@ -227,6 +229,11 @@ void compute_liquid_strain(Simulation& s) {
 //                                                     a recompression condenses it first)
 //   n ← max(1 − m_s/(ρ_s V), 0.5 n_0)                (the solid's mass is kept; grains incompressible;
 //                                                     the floor: closed pores, kClosedPorosityRatio)
+// With strain smoothing each particle's excess p* − p_h(z_p) then takes its cell's mean, as the
+// forces already do (add_pore_pressure_forces): the particles of a cell would otherwise keep, for
+// ever, whatever differences they brought into it (a pattern the grid cannot see, so no flow
+// evens it out), and the pore pressure read at a particle (u1, u2, the fields) would be that
+// pattern rather than what drives the water.
 void update_pore_pressure(Simulation& s) {
   TwoPhase& t = *s.two_phase;
   const Particles& P = s.particles;
@@ -241,13 +248,23 @@ void update_pore_pressure(Simulation& s) {
     const double solid = trace(s.strain_increment[p]);
     const double liquid = cell_mean_or_own(s, p, t.cell_strain_volume, t.cell_liquid_strain, limit, t.liquid_strain[p]);
     t.liquid_pressure[p] -= K / n * ((1.0 - n) * solid + n * liquid);
-    t.pore_pressure[p] = std::max(t.liquid_pressure[p], floor);
     const PoreSpace& pores = t.bodies[P.body[p]];
     const double open = 1.0 - P.mass[p] / (pores.grain_density_kg_m3 * P.volume[p]);
     const double least = kClosedPorosityRatio * pores.initial_porosity;
     closed += open < least;
     t.porosity[p] = std::max(open, least);
   }
+  if (smoothed(s)) {
+    const auto excess = [&](std::size_t p) { return t.liquid_pressure[p] - t.hydrostatic_pressure(P.z[p]); };
+    cell_sums(s, t.cell_volume, t.cell_pressure, excess);
+    for (std::size_t p = 0; p < P.size(); ++p)
+      if (t.saturated(P, p) && takes_part_in_cell_means(P, p, limit)) {
+        const std::size_t k = cell_slot(s, p);
+        t.liquid_pressure[p] = t.hydrostatic_pressure(P.z[p]) + t.cell_pressure[k] / t.cell_volume[k];
+      }
+  }
+  for (std::size_t p = 0; p < P.size(); ++p)
+    if (t.saturated(P, p)) t.pore_pressure[p] = std::max(t.liquid_pressure[p], floor);
   t.closed_pores = closed;
   t.closed_pores_max = std::max(t.closed_pores_max, closed);
 }
