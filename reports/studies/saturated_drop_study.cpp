@@ -21,7 +21,7 @@ namespace ffp {
 
 namespace {
 
-constexpr std::size_t kDry = 0, kMedium = 1, kFine = 2;
+constexpr std::size_t kDry = 0, kMedium = 1, kFine = 2, kDeep = 3;
 
 /// What sets how drained the sand is under the cone: c_v = k/(γ_w (1/E_c + n/K_w)) with the
 /// skeleton's constrained modulus E_c, and V = v D/c_v (Randolph & Hope 2004) at the impact.
@@ -53,6 +53,14 @@ std::string run_label(const StudyResults& results, std::size_t run) {
   return std::string("k = ") + k + " m/s, V = " + fixed(d.normalised_velocity, 0);
 }
 
+/// The hydrostatic pressure at the shoulder's depth, u2 − u2's excess, against time.
+Series shoulder_hydrostatic(const CsvData& h) {
+  Series hydrostatic{h.column("time_s"), h.column("u2_kPa"), "hydrostatic at the shoulder", "lines dashtype 2"};
+  const auto& excess = h.column("u2_excess_kPa");
+  for (std::size_t i = 0; i < hydrostatic.y.size(); ++i) hydrostatic.y[i] -= excess[i];
+  return hydrostatic;
+}
+
 /// u1 and u2 of both saturated runs against time, with the shoulder's hydrostatic pressure.
 void write_pore_pressure_figure(const StudyResults& results, StudyOutput& out) {
   Plot u2{"Pore pressure at the shoulder (u2)", "time (s)", "u2 (kPa)", {}, false, false, false, "top right"};
@@ -63,12 +71,7 @@ void write_pore_pressure_figure(const StudyResults& results, StudyOutput& out) {
     const std::string label = run_label(results, run);
     u2.series.push_back({h.column("time_s"), h.column("u2_kPa"), label});
     u1.series.push_back({h.column("time_s"), h.column("u1_kPa"), label});
-    if (run == kMedium) {
-      Series hydrostatic{h.column("time_s"), h.column("u2_kPa"), "hydrostatic at the shoulder", "lines dashtype 2"};
-      const auto& excess = h.column("u2_excess_kPa");
-      for (std::size_t i = 0; i < hydrostatic.y.size(); ++i) hydrostatic.y[i] -= excess[i];
-      u2.series.push_back(hydrostatic);
-    }
+    if (run == kMedium) u2.series.push_back(shoulder_hydrostatic(h));
   }
   if (u2.series.empty()) return out.document.paragraph(missing_run("saturated drop"));
   if (write_png_stack({u2, u1}, out.figures_dir / "saturated_drop_pore_pressure.png"))
@@ -169,6 +172,41 @@ void write_findings(const StudyResults& results, StudyOutput& out) {
   out.document.table({"finding (Yalcin et al. 2023; Yalcin 2021)", "here", ""}, rows);
 }
 
+/// The deep chamber's run through the stop: u2 against time, and when its excess dissipates.
+void write_stop_section(const StudyResults& results, StudyOutput& out) {
+  Markdown& md = out.document;
+  md.heading(3, "Through the stop");
+  const nlohmann::json s = results.summary(kDeep);
+  if (s.empty()) return md.paragraph(missing_run("deep chamber"));
+  const CsvData h = results.history(kDeep);
+  const double rest_s = s.value("rest_time_s", std::nan(""));
+  const bool rested = s.contains("rest_time_s") && s["rest_time_s"].is_number();
+  const bool dissipated = s.contains("u2_dissipation_time_s") && s["u2_dissipation_time_s"].is_number();
+  md.paragraph(
+      "The same saturated sand (k = 1e-4 m/s) in a chamber " + fixed(s.at("scene").at("soil").at("depth_m").get<double>(), 1) +
+      " m deep, on 2 cm cells to keep it to minutes (" + fixed(figure(results, kDeep, "particles"), 0) + " particles, " +
+      fixed(figure(results, kDeep, "steps"), 0) + " steps, " + fixed(figure(results, kDeep, "wall_time_s"), 0) +
+      " s): a coarse mesh's answer, shown for the course of u2 through the stop rather than for its figures. " +
+      (rested ? "The body comes to rest at " + fixed(1000 * rest_s, 0) + " ms, " +
+                    in_cm(figure(results, kDeep, "final_penetration_m")) + " deep (its body is " +
+                    in_cm(s.at("scene").at("ffp").at("body_length_m").get<double>()) + " long); u2's excess is " +
+                    fixed(figure(results, kDeep, "u2_excess_at_rest_kPa"), 1) + " kPa then, and " +
+                    (dissipated ? "falls to 10 % of it at " +
+                                      fixed(1000 * figure(results, kDeep, "u2_dissipation_time_s"), 0) + " ms."
+                                : s.value("u2_dissipation_note", std::string("does not dissipate in the run.")))
+              : "The body has not come to rest by the end of the run."));
+  Plot u2{"u2 through the stop (1.5 m chamber, 2 cm)", "time (s)", "u2 (kPa)", {}, false, false, false, "top right"};
+  Plot v{"velocity", "time (s)", "velocity (m/s)", {}, false, false, false, "top right"};
+  if (h.has("u2_kPa")) {
+    u2.series.push_back({h.column("time_s"), h.column("u2_kPa"), "u2"});
+    u2.series.push_back(shoulder_hydrostatic(h));
+    v.series.push_back({h.column("time_s"), h.column("velocity_m_s"), "velocity"});
+  }
+  if (write_png_stack({u2, v}, out.figures_dir / "saturated_drop_stop.png"))
+    md.figure(out.figures_relative + "/saturated_drop_stop.png",
+              "u2 and the body's velocity against time in the 1.5 m chamber, 2 cm cells, k = 1e-4 m/s");
+}
+
 }  // namespace
 
 Study saturated_drop_study(const std::filesystem::path& scenes_dir) {
@@ -179,8 +217,13 @@ Study saturated_drop_study(const std::filesystem::path& scenes_dir) {
   study.runs.push_back(scene_run(scenes_dir, "ffp_saturated.json", "ffp_saturated (k = 1e-4 m/s)"));
   study.runs.push_back(
       scene_run(scenes_dir, "ffp_saturated.json", "ffp_saturated (k = 1e-5 m/s)", {"soil.permeability_m_s=1e-5"}));
+  // To the stop and past it: the 1 cm chamber is too shallow for a body still moving at 4.7 m/s
+  // at its end, so a chamber 1.5 m deep on 2 cm cells, to 0.4 s.
+  study.runs.push_back(scene_run(scenes_dir, "ffp_saturated.json", "ffp_saturated (k = 1e-4 m/s, 1.5 m deep, 2 cm)",
+                                 {"soil.depth_m=1.5", "mesh.min_cell_m=0.02", "end_time_s=0.4"}));
   study.runs[kMedium].expected_wall_s = 100.0;  // 23,181 steps of 6,086 particles
   study.runs[kFine].expected_wall_s = 200.0;    // 67,779 steps: the drag's bound
+  study.runs[kDeep].expected_wall_s = 120.0;    // 96,000 steps of 5,661 particles
   study.write = [](const StudyResults& results, StudyOutput& out) {
     Markdown& md = out.document;
     md.paragraph(
@@ -218,10 +261,7 @@ Study saturated_drop_study(const std::filesystem::path& scenes_dir) {
         "the strength with it. Sands that dilate (ψ > 0) would draw the pore pressure down as they shear and "
         "gain strength: the saturated-chamber runs the findings below come from had dilation dominate.");
     write_findings(results, out);
-    md.paragraph(
-        "Not reached: the body's stop and the pore pressure's dissipation after it. The 0.4 m chamber is too "
-        "shallow for a body still moving at the end, and running it to rest needs a deeper chamber at the "
-        "two-phase step.");
+    write_stop_section(results, out);
   };
   return study;
 }
