@@ -7,23 +7,13 @@
 #include "reports/studies/saturated_runs.hpp"
 #include "reports/studies/saturated_sections.hpp"
 #include "reports/studies/study_helpers.hpp"
+#include "verification/sampled_integral.hpp"
 
 namespace ffp {
 
 namespace {
 
 constexpr double kMeanWindow_s = 2e-3;  ///< the mean behind the slow front: ten periods of its ringing
-
-/// ∫ f(j) dt over [t0, t1] of rows sampled at `time` (trapezoids).
-template <class F>
-double integral(const std::vector<double>& time, double t0, double t1, F&& f) {
-  double sum = 0.0;
-  for (std::size_t j = 1; j < time.size(); ++j) {
-    const double a = std::max(time[j - 1], t0), b = std::min(time[j], t1);
-    if (b > a) sum += 0.5 * (f(j - 1) + f(j)) * (b - a);
-  }
-  return sum;
-}
 
 struct WaveLevel {
   double cell_m = 0.0, wall_s = 0.0;
@@ -51,13 +41,13 @@ WaveLevel wave_level(const SaturatedRun& run) {
     for (std::size_t j = 0; j < run.time_s.size(); ++j) reference[j] = exact.pressure(P, ramp, x, run.time_s[j]);
     const auto& p = h.pore_pressure_Pa;
     const double fast =
-        integral(run.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - (p[j] - h.stress_zz_Pa[j]) / P; }) -
+        sampled_integral(run.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - (p[j] - h.stress_zz_Pa[j]) / P; }) -
         0.5 * ramp;
     const double jump = P * exact.slow_wave_pressure_share() * std::exp(-gamma * t2);
     const double slow =
-        t2 + integral(run.time_s, mid, run.time_s.back(), [&](std::size_t j) { return p[j] - reference[j]; }) / jump;
+        t2 + sampled_integral(run.time_s, mid, run.time_s.back(), [&](std::size_t j) { return p[j] - reference[j]; }) / jump;
     const auto mean_error = [&](double a, double b) {
-      return integral(run.time_s, a, b, [&](std::size_t j) { return p[j] - reference[j]; }) / (b - a);
+      return sampled_integral(run.time_s, a, b, [&](std::size_t j) { return p[j] - reference[j]; }) / (b - a);
     };
     const double after = t2 + ramp + delta;
     jumps.push_back(jump + mean_error(mid, t2 - delta) - mean_error(after, after + kMeanWindow_s));

@@ -11,6 +11,7 @@
 #include "models/consolidation_solutions.hpp"
 #include "mpm/simulation.hpp"
 #include "saturated_column.hpp"
+#include "verification/sampled_integral.hpp"
 
 using namespace ffp;
 using namespace ffp::mpm;
@@ -84,17 +85,6 @@ Histories run(const testing::SaturatedColumn& c, const std::vector<double>& dept
   return h;
 }
 
-/// ∫ f dt over [t0, t1] of a history sampled at `time` (trapezoids; the step before t0 starts it).
-template <class F>
-double integral(const std::vector<double>& time, double t0, double t1, F&& f) {
-  double sum = 0.0;
-  for (std::size_t j = 1; j < time.size(); ++j) {
-    const double a = std::max(time[j - 1], t0), b = std::min(time[j], t1);
-    if (b > a) sum += 0.5 * (f(j - 1) + f(j)) * (b - a);
-  }
-  return sum;
-}
-
 struct Fronts {
   std::vector<double> depth_m;  ///< the probed rows' centres
   std::vector<double> fast_arrival_s, slow_arrival_s, slow_jump_Pa;
@@ -120,14 +110,14 @@ Fronts measure(const Histories& h, const BiotColumn& exact, double cell_m) {
     std::vector<double> reference(h.time_s.size());
     for (std::size_t j = 0; j < h.time_s.size(); ++j) reference[j] = exact_p(h.time_s[j]);
     f.fast_arrival_s.push_back(
-        integral(h.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - h.total[k][j] / kLoad; }) - 0.5 * kRamp);
+        sampled_integral(h.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - h.total[k][j] / kLoad; }) - 0.5 * kRamp);
     const double jump = kLoad * exact.slow_wave_pressure_share() * std::exp(-gamma * t2);
     const double end = h.time_s.back();
     f.slow_arrival_s.push_back(t2 +
-                               integral(h.time_s, mid, end, [&](std::size_t j) { return p[j] - reference[j]; }) / jump);
+                               sampled_integral(h.time_s, mid, end, [&](std::size_t j) { return p[j] - reference[j]; }) / jump);
     // ⟨p − p_exact⟩ over a window: the front's ringing averages out, the exact smooth part cancels.
     const auto mean_error = [&](double t0, double t1) {
-      return integral(h.time_s, t0, t1, [&](std::size_t j) { return p[j] - reference[j]; }) / (t1 - t0);
+      return sampled_integral(h.time_s, t0, t1, [&](std::size_t j) { return p[j] - reference[j]; }) / (t1 - t0);
     };
     const double after = t2 + kRamp + delta;
     f.slow_jump_Pa.push_back(jump + mean_error(mid, t2 - delta) - mean_error(after, after + kWindow));
