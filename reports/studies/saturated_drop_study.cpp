@@ -25,11 +25,11 @@ constexpr std::size_t kDry = 0, kMedium = 1, kFine = 2, kDeep = 3;
 
 /// What sets how drained the sand is under the cone: c_v = k/(γ_w (1/E_c + n/K_w)) with the
 /// skeleton's constrained modulus E_c, and V = v D/c_v (Randolph & Hope 2004) at the impact.
-struct Drainage {
+struct DrainageFigures {
   double permeability_m_s = 0.0, consolidation_m2_s = 0.0, normalised_velocity = 0.0;
 };
 
-Drainage drainage_of(const StudyResults& results, std::size_t run) {
+DrainageFigures drainage_of(const StudyResults& results, std::size_t run) {
   const nlohmann::json s = results.summary(run);
   if (s.empty()) return {std::nan(""), std::nan(""), std::nan("")};
   const nlohmann::json& scene = s.at("scene");
@@ -47,7 +47,7 @@ Drainage drainage_of(const StudyResults& results, std::size_t run) {
 
 std::string run_label(const StudyResults& results, std::size_t run) {
   if (run == kDry) return "dry";
-  const Drainage d = drainage_of(results, run);
+  const DrainageFigures d = drainage_of(results, run);
   char k[16];
   std::snprintf(k, sizeof k, "%.0e", d.permeability_m_s);
   return std::string("k = ") + k + " m/s, V = " + fixed(d.normalised_velocity, 0);
@@ -104,7 +104,7 @@ void write_table(const StudyResults& results, StudyOutput& out) {
       rows.push_back({run_label(results, run), "FAILED: " + results.outcome(run).error});
       continue;
     }
-    const Drainage d = run == kDry ? Drainage{std::nan(""), std::nan(""), std::nan("")} : drainage_of(results, run);
+    const DrainageFigures d = run == kDry ? DrainageFigures{std::nan(""), std::nan(""), std::nan("")} : drainage_of(results, run);
     const bool dry = run == kDry;
     const nlohmann::json s = results.summary(run);
     rows.push_back(
