@@ -63,9 +63,6 @@ std::vector<double> plastic_deviatoric_strain(const mpm::Simulation& s) {
   return ep;
 }
 
-/// The largest radius of a soil particle whose plastic deviatoric strain is at least `threshold`:
-/// how far the sheared zone reaches from the axis (a local failure keeps it within a few body
-/// radii, a general one spreads it towards the wall). 0 where nothing has sheared that far.
 /// The deviatoric strain that counts a particle as sheared: 5 %, past what the loose sand's
 /// stiffness carries elastically away from the cone (q/3G ≈ 1 % at q = 30 kPa).
 constexpr double kShearedZoneStrain = 0.05;
