@@ -140,8 +140,10 @@ int command_report(const ReportOptions& options) {
 
     for (const std::string& title : left_out) {
       document.heading(2, title);
-      document.paragraph("Not run in this report: its runs take too long for the main job. Run it with `ffp report "
-                         "--only \"" + title + "\"`.");
+      document.paragraph(
+          "Not run in this report: its runs take too long for the main job. Run it with `ffp report "
+          "--only \"" +
+          title + "\"`.");
     }
 
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -104,33 +104,34 @@ void write_table(const StudyResults& results, StudyOutput& out) {
       rows.push_back({run_label(results, run), "FAILED: " + results.outcome(run).error});
       continue;
     }
-    const DrainageFigures d = run == kDry ? DrainageFigures{std::nan(""), std::nan(""), std::nan("")} : drainage_of(results, run);
+    const DrainageFigures d =
+        run == kDry ? DrainageFigures{std::nan(""), std::nan(""), std::nan("")} : drainage_of(results, run);
     const bool dry = run == kDry;
     const nlohmann::json s = results.summary(run);
-    rows.push_back(
-        {run_label(results, run), dry ? "–" : scientific(d.consolidation_m2_s) + " m²/s; " + fixed(d.normalised_velocity, 1),
-         scientific(figure(results, run, "dt_s")) + " s; " +
-             (dry ? std::string("CFL") : s.value("time_step_limited_by", std::string("?"))),
-         fixed(figure(results, run, "steps"), 0), fixed(figure(results, run, "wall_time_s"), 0) + " s",
-         dry ? in_cm(dry_at(results, "penetration_m", end_s)) + "; " +
-                   fixed(dry_at(results, "velocity_m_s", end_s), 2) + " m/s"
-             : in_cm(figure(results, run, "final_penetration_m")) + "; " +
-                   fixed(figure(results, run, "final_velocity_m_s"), 2) + " m/s",
-         fixed(figure(results, run, "peak_deceleration_2ms_g"), 1) + " g",
-         dry ? "–"
-             : fixed(figure(results, run, "u2_peak_kPa"), 0) + " / " + fixed(figure(results, run, "u2_min_kPa"), 0) +
-                   " kPa",
-         dry ? "–"
-             : fixed(figure(results, run, "u1_max_kPa"), 0) + " / " + fixed(figure(results, run, "u1_min_kPa"), 0) +
-                   " kPa",
-         in_cm(figure(results, run, "sheared_zone_radius_m")) + (dry ? " (at rest)" : " (at the end)")});
+    rows.push_back({run_label(results, run),
+                    dry ? "–" : scientific(d.consolidation_m2_s) + " m²/s; " + fixed(d.normalised_velocity, 1),
+                    scientific(figure(results, run, "dt_s")) + " s; " +
+                        (dry ? std::string("CFL") : s.value("time_step_limited_by", std::string("?"))),
+                    fixed(figure(results, run, "steps"), 0), fixed(figure(results, run, "wall_time_s"), 0) + " s",
+                    dry ? in_cm(dry_at(results, "penetration_m", end_s)) + "; " +
+                              fixed(dry_at(results, "velocity_m_s", end_s), 2) + " m/s"
+                        : in_cm(figure(results, run, "final_penetration_m")) + "; " +
+                              fixed(figure(results, run, "final_velocity_m_s"), 2) + " m/s",
+                    fixed(figure(results, run, "peak_deceleration_2ms_g"), 1) + " g",
+                    dry ? "–"
+                        : fixed(figure(results, run, "u2_peak_kPa"), 0) + " / " +
+                              fixed(figure(results, run, "u2_min_kPa"), 0) + " kPa",
+                    dry ? "–"
+                        : fixed(figure(results, run, "u1_max_kPa"), 0) + " / " +
+                              fixed(figure(results, run, "u1_min_kPa"), 0) + " kPa",
+                    in_cm(figure(results, run, "sheared_zone_radius_m")) + (dry ? " (at rest)" : " (at the end)")});
   }
-  out.document.table({"sand", "c_v; V at impact", "step at the start; its limit", "steps", "wall time",
-                      "penetration; velocity at " + fixed(1000 * end_s, 0) + " ms",
-                      "2 ms peak (over the run)", "u2 peak / min", "u1 max / min",
-                      "sheared zone's reach (ε_dev ≥ " +
-                          fixed(100 * figure(results, kDry, "sheared_zone_strain"), 0) + " %)"},
-                     rows);
+  out.document.table(
+      {"sand", "c_v; V at impact", "step at the start; its limit", "steps", "wall time",
+       "penetration; velocity at " + fixed(1000 * end_s, 0) + " ms", "2 ms peak (over the run)", "u2 peak / min",
+       "u1 max / min",
+       "sheared zone's reach (ε_dev ≥ " + fixed(100 * figure(results, kDry, "sheared_zone_strain"), 0) + " %)"},
+      rows);
 }
 
 /// The saturated-chamber findings beside these runs, each a match or a miss as it comes out.
@@ -163,8 +164,8 @@ void write_findings(const StudyResults& results, StudyOutput& out) {
                     least_excess < 0 ? "matches in sign, not in cause" : "miss"});
     const double reach = figure(results, run, "sheared_zone_radius_m");
     rows.push_back({"a local failure saturated, a general one dry (" + label + ")",
-                    "sheared zone reaches r = " + in_cm(reach) + " by " + fixed(1000 * end_s, 0) +
-                        " ms, the dry one " + in_cm(dry_reach) + " at rest",
+                    "sheared zone reaches r = " + in_cm(reach) + " by " + fixed(1000 * end_s, 0) + " ms, the dry one " +
+                        in_cm(dry_reach) + " at rest",
                     reach < dry_reach - cell_m   ? "match"
                     : reach > dry_reach + cell_m ? "miss (wider saturated)"
                                                  : "miss (as wide as dry, within a cell)"});
@@ -183,9 +184,11 @@ void write_stop_section(const StudyResults& results, StudyOutput& out) {
   const bool rested = s.contains("rest_time_s") && s["rest_time_s"].is_number();
   const bool dissipated = s.contains("u2_dissipation_time_s") && s["u2_dissipation_time_s"].is_number();
   md.paragraph(
-      "The same saturated sand (k = 1e-4 m/s) in a chamber " + fixed(s.at("scene").at("soil").at("depth_m").get<double>(), 1) +
-      " m deep, on 2 cm cells to keep it to minutes (" + fixed(figure(results, kDeep, "particles"), 0) + " particles, " +
-      fixed(figure(results, kDeep, "steps"), 0) + " steps, " + fixed(figure(results, kDeep, "wall_time_s"), 0) +
+      "The same saturated sand (k = 1e-4 m/s) in a chamber " +
+      fixed(s.at("scene").at("soil").at("depth_m").get<double>(), 1) +
+      " m deep, on 2 cm cells to keep it to minutes (" + fixed(figure(results, kDeep, "particles"), 0) +
+      " particles, " + fixed(figure(results, kDeep, "steps"), 0) + " steps, " +
+      fixed(figure(results, kDeep, "wall_time_s"), 0) +
       " s): a coarse mesh's answer, shown for the course of u2 through the stop rather than for its figures. " +
       (rested ? "The body comes to rest at " + fixed(1000 * rest_s, 0) + " ms, " +
                     in_cm(figure(results, kDeep, "final_penetration_m")) + " deep (its body is " +

@@ -44,8 +44,9 @@ WaveLevel wave_level(const SaturatedRun& run) {
         sampled_integral(run.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - (p[j] - h.stress_zz_Pa[j]) / P; }) -
         0.5 * ramp;
     const double jump = P * exact.slow_wave_pressure_share() * std::exp(-gamma * t2);
-    const double slow =
-        t2 + sampled_integral(run.time_s, mid, run.time_s.back(), [&](std::size_t j) { return p[j] - reference[j]; }) / jump;
+    const double slow = t2 + sampled_integral(run.time_s, mid, run.time_s.back(), [&](std::size_t j) {
+                               return p[j] - reference[j];
+                             }) / jump;
     const auto mean_error = [&](double a, double b) {
       return sampled_integral(run.time_s, a, b, [&](std::size_t j) { return p[j] - reference[j]; }) / (b - a);
     };

@@ -113,8 +113,8 @@ Fronts measure(const Histories& h, const BiotColumn& exact, double cell_m) {
         sampled_integral(h.time_s, 0.0, mid, [&](std::size_t j) { return 1.0 - h.total[k][j] / kLoad; }) - 0.5 * kRamp);
     const double jump = kLoad * exact.slow_wave_pressure_share() * std::exp(-gamma * t2);
     const double end = h.time_s.back();
-    f.slow_arrival_s.push_back(t2 +
-                               sampled_integral(h.time_s, mid, end, [&](std::size_t j) { return p[j] - reference[j]; }) / jump);
+    f.slow_arrival_s.push_back(
+        t2 + sampled_integral(h.time_s, mid, end, [&](std::size_t j) { return p[j] - reference[j]; }) / jump);
     // ⟨p − p_exact⟩ over a window: the front's ringing averages out, the exact smooth part cancels.
     const auto mean_error = [&](double t0, double t1) {
       return sampled_integral(h.time_s, t0, t1, [&](std::size_t j) { return p[j] - reference[j]; }) / (t1 - t0);
