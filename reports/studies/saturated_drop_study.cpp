@@ -208,6 +208,12 @@ void write_stop_section(const StudyResults& results, StudyOutput& out) {
   if (write_png_stack({u2, v}, out.figures_dir / "saturated_drop_stop.png"))
     md.figure(out.figures_relative + "/saturated_drop_stop.png",
               "u2 and the body's velocity against time in the 1.5 m chamber, 2 cm cells, k = 1e-4 m/s");
+  // At rest the body is at its deepest: the fields there.
+  const std::string end = fixed(s.at("scene").at("end_time_s").get<double>(), 3);
+  include_run_figure(results, kDeep, "plots/excess_pore_pressure_t" + end + ".png", "saturated_drop_rest_excess.png",
+                     "Excess pore pressure with the body at rest, 1.5 m chamber, 2 cm cells", out);
+  include_run_figure(results, kDeep, "plots/deviatoric_strain_t" + end + ".png", "saturated_drop_rest_strain.png",
+                     "Deviatoric strain with the body at rest, 1.5 m chamber, 2 cm cells", out);
 }
 
 }  // namespace
