@@ -25,13 +25,14 @@ constexpr std::size_t kDry = 0, kMedium = 1, kFine = 2, kDeep = 3;
 
 /// What sets how drained the sand is under the cone: c_v = k/(γ_w (1/E_c + n/K_w)) with the
 /// skeleton's constrained modulus E_c, and V = v D/c_v (Randolph & Hope 2004) at the impact.
+/// NaN where the run has none (the dry sand, a failed run).
 struct DrainageFigures {
-  double permeability_m_s = 0.0, consolidation_m2_s = 0.0, normalised_velocity = 0.0;
+  double permeability_m_s = std::nan(""), consolidation_m2_s = std::nan(""), normalised_velocity = std::nan("");
 };
 
 DrainageFigures drainage_of(const StudyResults& results, std::size_t run) {
   const nlohmann::json s = results.summary(run);
-  if (s.empty()) return {std::nan(""), std::nan(""), std::nan("")};
+  if (s.empty()) return {};
   const nlohmann::json& scene = s.at("scene");
   const double E = 1e3 * scene.at("material").at("E_kPa").get<double>();
   const double nu = scene.at("material").at("nu").get<double>();
@@ -104,9 +105,8 @@ void write_table(const StudyResults& results, StudyOutput& out) {
       rows.push_back({run_label(results, run), "FAILED: " + results.outcome(run).error});
       continue;
     }
-    const DrainageFigures d =
-        run == kDry ? DrainageFigures{std::nan(""), std::nan(""), std::nan("")} : drainage_of(results, run);
     const bool dry = run == kDry;
+    const DrainageFigures d = dry ? DrainageFigures{} : drainage_of(results, run);
     const nlohmann::json s = results.summary(run);
     rows.push_back({run_label(results, run),
                     dry ? "–" : scientific(d.consolidation_m2_s) + " m²/s; " + fixed(d.normalised_velocity, 1),
